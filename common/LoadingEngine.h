@@ -1,0 +1,36 @@
+#pragma once
+// The contract between the loading program and an engine.
+//
+// ProgramRunner owns the program logic (stages, stop conditions, unloading branches,
+// sampling); an engine only knows how to follow a StageControl in time, how to measure
+// itself, and how to save and restore its whole state (for branches and checkpoints).
+// DEM (walls + servo), the deal.II cube and the material-point driver implement it.
+#include "common/LoadingProgram.h"
+#include "common/Response.h"
+
+#include <memory>
+
+namespace geocomp {
+
+/// Opaque saved state of an engine (particles + contacts, or FE history...).
+struct EngineState {
+  virtual ~EngineState() = default;
+};
+
+class LoadingEngine {
+public:
+  virtual ~LoadingEngine() = default;
+  virtual std::string name() const = 0;
+  /// Columns this engine appends to every sample.
+  virtual std::vector<ExtraColumn> extra_columns() const = 0;
+  /// Start following a control from the current state and time.
+  virtual void begin_control(const StageControl &control) = 0;
+  /// Advance the engine's time to t_end following the current control.
+  virtual void advance_to(double t_end) = 0;
+  /// Current time, strain, stress and extras (stage/branch are filled by the runner).
+  virtual ResponseSample measure() = 0;
+  virtual std::unique_ptr<EngineState> save() const = 0;
+  virtual void restore(const EngineState &state) = 0;
+};
+
+} // namespace geocomp

@@ -1,0 +1,229 @@
+#include "common/ProgramRunner.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace geocomp {
+
+double evaluate(Quantity q, const ResponseSample &s, const ConditionContext &ctx)
+{
+  switch (q) {
+  case Quantity::Time: return s.time;
+  case Quantity::StageTime: return s.time - ctx.stage_start_time;
+  case Quantity::EpsXX: return s.strain(0, 0);
+  case Quantity::EpsYY: return s.strain(1, 1);
+  case Quantity::EpsZZ: return s.strain(2, 2);
+  case Quantity::SigXX: return s.stress(0, 0);
+  case Quantity::SigYY: return s.stress(1, 1);
+  case Quantity::SigZZ: return s.stress(2, 2);
+  case Quantity::GammaMax: return gamma_max(s.strain);
+  case Quantity::TauMax: return tau_max(s.stress);
+  case Quantity::VolumetricStrain: return volumetric_strain(s.strain);
+  case Quantity::MeanStress: return mean_stress(s.stress);
+  case Quantity::StressRatio: {
+    const Vector3 p = principal_values(s.stress);
+    return p[2] != 0.0 ? p[0] / p[2] : (p[0] != 0.0 ? INFINITY : 1.0);
+  }
+  case Quantity::PeakDrop: {
+    const double tau = tau_max(s.stress);
+    return ctx.tau_peak > 0.0 ? std::max(0.0, (ctx.tau_peak - tau) / ctx.tau_peak) : 0.0;
+  }
+  case Quantity::ServoError: {
+    double err = 0.0;
+    if (ctx.stage && !ctx.stage->isochoric)
+      for (int a = 0; a < 3; ++a)
+        if (ctx.stage->axes[a].is_stress()) {
+          const double target = ctx.stage->axes[a].value;
+          const double scale = std::abs(target) > 0.0 ? std::abs(target) : 1.0;
+          err = std::max(err, std::abs(s.stress(a, a) - target) / scale);
+        }
+    return err;
+  }
+  }
+  return 0.0;
+}
+
+bool holds(const Condition &c, const ResponseSample &s, const ConditionContext &ctx)
+{
+  const double v = evaluate(c.quantity, s, ctx);
+  return c.at_least ? v >= c.value : v <= c.value;
+}
+
+ProgramRunner::ProgramRunner(const LoadingProgram &program, LoadingEngine &engine)
+  : program_(program), engine_(engine)
+{
+  program_.validate();
+}
+
+void ProgramRunner::record(ResponseSample s, int stage, int branch, double fraction)
+{
+  s.stage = stage;
+  s.branch = branch;
+  response_.samples.push_back(std::move(s));
+  if (progress_) {
+    RunProgress p;
+    p.stage = stage;
+    p.stage_count = static_cast<int>(program_.stages.size());
+    p.branch = branch;
+    p.time = response_.samples.back().time;
+    p.stage_fraction = std::clamp(fraction, 0.0, 1.0);
+    p.sample = &response_.samples.back();
+    progress_(p);
+  }
+}
+
+Response ProgramRunner::run()
+{
+  response_ = Response{};
+  stage_start_sample_.clear();
+  response_.engine = engine_.name();
+  response_.extras = engine_.extra_columns();
+  for (const auto &s : program_.stages)
+    response_.stage_names.push_back(s.name);
+  record(engine_.measure(), 0, 0, 0.0);
+  for (std::size_t i = 0; i < program_.stages.size(); ++i)
+    run_stage(static_cast<int>(i));
+  return std::move(response_);
+}
+
+namespace {
+/// Fraction of the way from the stage start to a stop condition's threshold.
+double condition_fraction(const Condition &c, const ResponseSample &start, const ResponseSample &now,
+                          const ConditionContext &ctx)
+{
+  const double v0 = evaluate(c.quantity, start, ctx);
+  const double v = evaluate(c.quantity, now, ctx);
+  const double span = c.value - v0;
+  if (span == 0.0 || !std::isfinite(span))
+    return 0.0;
+  return (v - v0) / span;
+}
+} // namespace
+
+void ProgramRunner::run_stage(int index)
+{
+  const Stage &stage = program_.stages[index];
+  stage_start_sample_.push_back(response_.samples.size() - 1);
+  const ResponseSample start = response_.samples.back();
+  StageControl control;
+  control.stage = &stage;
+  control.t0 = start.time;
+  control.eps0 = start.strain.diagonal();
+  control.direction = 1.0;
+  engine_.begin_control(control);
+
+  ConditionContext ctx{start.time, 0.0, &stage};
+  std::vector<bool> fired(stage.unload_at.size(), false);
+  std::unique_ptr<EngineState> peak_state;
+  std::size_t peak_sample = response_.samples.size() - 1;
+  const bool wants_peak_state =
+    std::any_of(stage.unload_at.begin(), stage.unload_at.end(),
+                [](const BranchTrigger &b) { return b.kind == BranchTrigger::Kind::AtPeak; });
+
+  const double t_end = start.time + stage.max_duration;
+  std::string reason;
+  double t = start.time;
+  while (reason.empty()) {
+    const double t_next = std::min(t + program_.sample_interval, t_end);
+    engine_.advance_to(t_next);
+    t = t_next;
+    ResponseSample s = engine_.measure();
+    const double tau = tau_max(s.stress);
+    if (tau > ctx.tau_peak) {
+      ctx.tau_peak = tau;
+      peak_sample = response_.samples.size(); // index this sample will get
+      if (wants_peak_state)
+        peak_state = engine_.save();
+    }
+    double fraction = (t - start.time) / stage.max_duration;
+    for (const auto &c : stage.stop_any)
+      fraction = std::max(fraction, condition_fraction(c, start, s, ctx));
+    for (const auto &c : stage.stop_any)
+      if (reason.empty() && holds(c, s, ctx))
+        reason = c.text;
+    if (reason.empty() && t >= t_end)
+      reason = "max duration";
+    record(s, index, 0, reason.empty() ? fraction : 1.0);
+
+    const ResponseSample &now = response_.samples.back();
+    for (std::size_t k = 0; k < stage.unload_at.size(); ++k) {
+      if (fired[k])
+        continue;
+      const BranchTrigger &trigger = stage.unload_at[k];
+      if (trigger.kind == BranchTrigger::Kind::AtPeak) {
+        if (peak_state && evaluate(Quantity::PeakDrop, now, ctx) >= stage.peak_tolerance) {
+          fired[k] = true;
+          run_branch(index, control, trigger.text, peak_sample, peak_state.get());
+        }
+      } else if (holds(trigger.condition, now, ctx)) {
+        fired[k] = true;
+        run_branch(index, control, trigger.text, response_.samples.size() - 1, nullptr);
+      }
+    }
+  }
+  response_.stage_end_reasons.push_back(reason);
+}
+
+void ProgramRunner::run_branch(int stage_index, const StageControl &main, const std::string &trigger,
+                               std::size_t from_sample, const EngineState *from_state)
+{
+  const Stage &stage = *main.stage;
+  const std::unique_ptr<EngineState> resume = engine_.save();
+  if (from_state)
+    engine_.restore(*from_state);
+  // The sample the branch leaves from: the main-path sample at the saved state.
+  const ResponseSample origin = response_.samples[from_sample];
+
+  BranchRecord b;
+  b.id = static_cast<int>(response_.branches.size()) + 1;
+  b.stage = stage_index;
+  b.trigger = trigger;
+  b.first_sample = from_sample;
+  b.tau_start = tau_max(origin.stress);
+  b.gamma_start = gamma_max(origin.strain);
+  // Level to return to: tau_max where the stage started, or the given one.
+  const ResponseSample stage_start = response_.samples[stage_start_sample_[stage_index]];
+  // Unloading is measured along the deviator the branch leaves with, signed, so a path
+  // that overshoots the target through zero still stops: tau_D(s) = tau_o dev(s):d/(d:d).
+  const Tensor3 d = origin.stress - mean_stress(origin.stress) * Tensor3::Identity();
+  const double dd = (d.array() * d.array()).sum();
+  auto along = [&](const Tensor3 &stress) {
+    const Tensor3 dev = stress - mean_stress(stress) * Tensor3::Identity();
+    return dd > 0.0 ? b.tau_start * (dev.array() * d.array()).sum() / dd : tau_max(stress);
+  };
+  b.tau_target = stage.unload_to_start ? along(stage_start.stress) : stage.unload_to_tau;
+
+  StageControl reverse = main;
+  reverse.t0 = origin.time;
+  reverse.eps0 = origin.strain.diagonal();
+  reverse.direction = -1.0;
+  engine_.begin_control(reverse);
+
+  double t = origin.time;
+  const double t_end = origin.time + stage.max_duration;
+  while (true) {
+    const double t_next = std::min(t + program_.sample_interval, t_end);
+    engine_.advance_to(t_next);
+    t = t_next;
+    ResponseSample s = engine_.measure();
+    const double tau = along(s.stress);
+    const double fraction =
+      b.tau_start > b.tau_target ? (b.tau_start - tau) / (b.tau_start - b.tau_target) : 1.0;
+    record(s, stage_index, b.id, fraction);
+    if (tau <= b.tau_target) {
+      b.reached_target = true;
+      break;
+    }
+    if (t >= t_end)
+      break;
+  }
+  b.last_sample = response_.samples.size() - 1;
+  // Residual shear strain of the stage: what unloading did not recover.
+  b.residual_gamma = gamma_max(response_.samples.back().strain - stage_start.strain);
+  response_.branches.push_back(b);
+
+  engine_.restore(*resume);
+  engine_.begin_control(main);
+}
+
+} // namespace geocomp

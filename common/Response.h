@@ -1,0 +1,58 @@
+#pragma once
+// The Response record: what every engine emits for a loading program.
+//
+// One sample per sampling instant: time, the full engineering strain tensor of the box
+// (relative to the start of the program), the full stress tensor, the stage and the
+// branch it belongs to (0 = main path, k = k-th unloading branch), and named engine
+// extras (DEM: coordination number, inertial number...; FE: Newton iterations...).
+// Metrics in compare/ read only this record, so they never depend on the engine.
+#include "common/Tensor.h"
+
+#include <string>
+#include <vector>
+
+namespace geocomp {
+
+struct ResponseSample {
+  double time = 0.0;
+  Tensor3 strain = Tensor3::Zero(); ///< engineering, tension positive
+  Tensor3 stress = Tensor3::Zero(); ///< Cauchy [Pa], tension positive
+  int stage = 0;                    ///< 0-based stage index
+  int branch = 0;                   ///< 0 main path, k >= 1 unloading branch k
+  std::vector<double> extras;       ///< aligned with Response::extras
+};
+
+struct ExtraColumn {
+  std::string name;
+  std::string units;
+  std::string description;
+};
+
+/// One unloading branch: where it left the main path and where it ended.
+struct BranchRecord {
+  int id = 0;
+  int stage = 0;
+  std::string trigger;
+  std::size_t first_sample = 0; ///< index of the main-path sample it starts from
+  std::size_t last_sample = 0;  ///< index of its final sample
+  double tau_start = 0.0;       ///< tau_max where the branch left the main path
+  double tau_target = 0.0;      ///< level it unloaded to
+  double gamma_start = 0.0;     ///< gamma_max there
+  double residual_gamma = 0.0;  ///< gamma_max at the end of the branch
+  bool reached_target = false;
+};
+
+struct Response {
+  std::string engine; ///< "dem", "continuum-fe", "material-point", ...
+  std::vector<ExtraColumn> extras;
+  std::vector<ResponseSample> samples;
+  std::vector<BranchRecord> branches;
+  std::vector<std::string> stage_names;
+  std::vector<std::string> stage_end_reasons; ///< condition text, or "max duration"
+
+  int extra_index(const std::string &name) const; ///< -1 if absent
+  /// Samples of one branch (0 = main path) in order.
+  std::vector<const ResponseSample *> path(int branch) const;
+};
+
+} // namespace geocomp

@@ -1,0 +1,131 @@
+#include "common/ProgramRunner.h"
+#include "HystereticShearEngine.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace geocomp;
+using geocomp::testing::HystereticShearEngine;
+
+namespace {
+// lambda = 0 isochoric shear: gamma_max = eps_z - eps_x grows at about 2 * rate.
+LoadingProgram shear_program(std::vector<std::string> triggers, double stop_gamma = 0.2)
+{
+  LoadingProgram p;
+  p.sample_interval = 0.01;
+  Stage s;
+  s.name = "shear";
+  s.isochoric = true;
+  s.lambda = 0.0;
+  s.isochoric_rate = 0.05;
+  s.stop_any = {parse_condition("gamma_max >= " + std::to_string(stop_gamma), "test")};
+  s.max_duration = 100;
+  for (const auto &t : triggers)
+    s.unload_at.push_back(parse_trigger(t, "test"));
+  p.stages.push_back(s);
+  return p;
+}
+} // namespace
+
+// A kinematic stage ends at the first sample where its condition holds, not later.
+TEST(ProgramRunner, StageEndsAtFirstSampleWhereConditionHolds)
+{
+  LoadingProgram p;
+  p.sample_interval = 0.1;
+  Stage a;
+  a.name = "compress";
+  a.axes = {AxisDrive::rate(0), AxisDrive::rate(0), AxisDrive::rate(-0.01)};
+  a.stop_any = {parse_condition("eps_zz <= -0.0095", "t")};
+  a.max_duration = 100;
+  Stage b = a;
+  b.name = "stretch";
+  b.axes[2] = AxisDrive::rate(0.02);
+  b.stop_any = {parse_condition("eps_zz >= 0.0", "t"), parse_condition("stage_time >= 50", "t")};
+  p.stages = {a, b};
+  HystereticShearEngine engine;
+  ProgramRunner runner(p, engine);
+  const Response r = runner.run();
+  // Stage 1: eps_zz = -0.001 k at sample k: first k with -0.001 k <= -0.0095 is k = 10.
+  int last_a = -1;
+  for (std::size_t i = 0; i < r.samples.size(); ++i)
+    if (r.samples[i].stage == 0)
+      last_a = static_cast<int>(i);
+  EXPECT_EQ(last_a, 10); // sample 0 is the initial state
+  EXPECT_NEAR(r.samples[last_a].strain(2, 2), -0.010, 1e-12);
+  // Stage 2 climbs 0.002 per sample from -0.010: 5 samples.
+  EXPECT_EQ(r.samples.size(), 16u);
+  EXPECT_NEAR(r.samples.back().strain(2, 2), 0.0, 1e-12);
+  ASSERT_EQ(r.stage_end_reasons.size(), 2u);
+  EXPECT_EQ(r.stage_end_reasons[0], "eps_zz <= -0.0095");
+  EXPECT_EQ(r.stage_end_reasons[1], "eps_zz >= 0.0");
+}
+
+TEST(ProgramRunner, MaxDurationEndsStageAndSaysSo)
+{
+  LoadingProgram p = shear_program({}, 10.0);
+  p.stages[0].max_duration = 0.5;
+  HystereticShearEngine engine;
+  const Response r = ProgramRunner(p, engine).run();
+  EXPECT_EQ(r.samples.size(), 51u);
+  EXPECT_EQ(r.stage_end_reasons[0], "max duration");
+}
+
+// Branches are excursions: the main path with branches equals the main path without.
+TEST(ProgramRunner, BranchesLeaveTheMainPathUnchanged)
+{
+  HystereticShearEngine e1, e2;
+  const Response plain = ProgramRunner(shear_program({}), e1).run();
+  const Response branched =
+    ProgramRunner(shear_program({"gamma_max >= 0.02", "gamma_max >= 0.08"}), e2).run();
+  const auto a = plain.path(0), b = branched.path(0);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i]->time, b[i]->time);
+    EXPECT_EQ(a[i]->stress, b[i]->stress);
+  }
+  EXPECT_EQ(branched.branches.size(), 2u);
+}
+
+// Unloading from gamma_h returns to tau = 0 (the stage start) along slope K:
+// residual gamma = gamma_h - tau_b(gamma_h)/K, within one sample of overshoot.
+TEST(ProgramRunner, UnloadingBranchResidualMatchesElasticUnloading)
+{
+  HystereticShearEngine engine;
+  const Response r = ProgramRunner(shear_program({"gamma_max >= 0.03"}), engine).run();
+  ASSERT_EQ(r.branches.size(), 1u);
+  const BranchRecord &b = r.branches[0];
+  EXPECT_TRUE(b.reached_target);
+  EXPECT_EQ(b.tau_target, 0.0);
+  const double gh = b.gamma_start;
+  EXPECT_GE(gh, 0.03);
+  const double expected = gh - engine.backbone(gh) / engine.K;
+  const double per_sample = 2 * 0.05 * 0.01 * 1.001; // gamma change in one sample
+  EXPECT_LE(b.residual_gamma, expected + 1e-12);
+  EXPECT_GE(b.residual_gamma, expected - per_sample);
+  // Every branch sample carries the branch id and unloads monotonically.
+  const auto path = r.path(1);
+  ASSERT_FALSE(path.empty());
+  for (std::size_t i = 1; i < path.size(); ++i)
+    EXPECT_LT(tau_max(path[i]->stress), tau_max(path[i - 1]->stress));
+}
+
+// "peak" branches start from the state at the running maximum of tau_max.
+TEST(ProgramRunner, PeakBranchStartsAtThePeak)
+{
+  HystereticShearEngine engine;
+  const Response r = ProgramRunner(shear_program({"peak", "peak_drop >= 0.2"}), engine).run();
+  ASSERT_EQ(r.branches.size(), 2u);
+  const BranchRecord &peak = r.branches[0];
+  EXPECT_EQ(peak.trigger, "peak");
+  // The backbone peaks at g0 = 0.05 with tau = A; the sampled peak is within a sample.
+  EXPECT_NEAR(peak.gamma_start, engine.g0, 2 * 0.05 * 0.01);
+  EXPECT_NEAR(peak.tau_start, engine.A, 1e-3 * engine.A);
+  double tau_main_max = 0;
+  for (const auto *s : r.path(0))
+    tau_main_max = std::max(tau_main_max, tau_max(s->stress));
+  EXPECT_DOUBLE_EQ(peak.tau_start, tau_main_max);
+  const BranchRecord &soft = r.branches[1];
+  EXPECT_GE((engine.A - soft.tau_start) / engine.A, 0.2);
+  EXPECT_GT(soft.residual_gamma, peak.residual_gamma);
+}
