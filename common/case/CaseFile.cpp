@@ -1,0 +1,271 @@
+// Reading a case file: declare every section, parse with deal.II's ParameterHandler,
+// convert to plain structs, validate, and turn every failure into one CaseError that
+// names the file, the parameter and what was expected.
+#include "common/case/CaseParameters.h"
+#include "common/case/Sections.h"
+
+#include <deal.II/base/exceptions.h>
+
+#include <boost/property_tree/json_parser.hpp>
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace geocomp {
+
+namespace {
+using namespace dealii;
+
+void declare_top(ParameterHandler &prm)
+{
+  prm.declare_entry("title", "", Patterns::Anything(), "A title for reports.");
+  prm.declare_entry("engines", "dem, continuum", Patterns::MultipleSelection("dem|continuum|material-point"),
+                    "Engines that run the program: 'dem', 'continuum' (deal.II cube), 'material-point' "
+                    "(the continuum model at one point).");
+  prm.declare_entry("seed", "1", Patterns::Integer(0), "Random seed: the same seed gives the same specimen and curves.");
+}
+
+void declare_all(ParameterHandler &prm, unsigned int stages)
+{
+  declare_top(prm);
+  sections::declare_specimen(prm);
+  sections::declare_contact(prm);
+  sections::declare_dem(prm);
+  sections::declare_continuum(prm);
+  sections::declare_program(prm, stages);
+  sections::declare_output(prm);
+}
+
+/// deal.II's exception text carries file/line of the library; keep the part for users.
+std::string user_message(const std::string &what, const std::string &path)
+{
+  std::string s = what;
+  const auto info = s.find("Additional information:");
+  if (info != std::string::npos)
+    s = s.substr(info + 23);
+  const auto trace = s.find("Stacktrace:");
+  if (trace != std::string::npos)
+    s = s.substr(0, trace);
+  std::string out;
+  bool space = false;
+  for (char c : s) {
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      space = !out.empty();
+      continue;
+    }
+    if (space)
+      out += ' ';
+    space = false;
+    out += c;
+  }
+  while (!out.empty() && (out.back() == '-' || out.back() == ' '))
+    out.pop_back();
+  // The file is named once, by CaseError; keep only the line number.
+  for (const std::string &file : {" of file <" + path + ">: ", " of file <" + path + ": "}) {
+    const auto at = out.find(file);
+    if (at != std::string::npos)
+      out.replace(at, file.size(), ": ");
+  }
+  static const std::regex where(R"(Line <([0-9]+)>: )");
+  return std::regex_replace(out, where, "line $1: ");
+}
+
+/// "section/subsection/" enclosing a 1-based line of a .prm text.
+std::string section_path_at(const std::string &text, int line)
+{
+  std::vector<std::string> stack;
+  std::istringstream in(text);
+  std::string l;
+  static const std::regex sub(R"(^\s*subsection\s+(.*?)\s*$)"), end(R"(^\s*end\s*$)");
+  for (int n = 1; n < line && std::getline(in, l); ++n) {
+    const auto hash = l.find('#');
+    if (hash != std::string::npos)
+      l = l.substr(0, hash);
+    std::smatch m;
+    if (std::regex_match(l, m, sub))
+      stack.push_back(m[1]);
+    else if (std::regex_match(l, end) && !stack.empty())
+      stack.pop_back();
+  }
+  std::string out;
+  for (const auto &s : stack)
+    out += s + "/";
+  return out;
+}
+
+/// The parameter a ParameterHandler message is about, with its section path when the
+/// message gives a line; "(file)" when it names none.
+std::string parameter_in(const std::string &message, const std::string &text)
+{
+  static const std::regex line(R"([Ll]ine <?([0-9]+)>?:)");
+  static const std::regex named(R"(entry named (.+?) does not match)");
+  static const std::regex declared(R"(entry <([^>]*)>|parameter <([^>]*)>)");
+  static const std::regex subsection(R"(subsection <([^>]*)>|No entry with name <([^>]*)>|no such subsection to be entered: ([^ .]+))");
+  std::smatch m, l;
+  const int at = std::regex_search(message, l, line) ? std::stoi(l[1]) : -1;
+  const std::string prefix = at > 0 ? section_path_at(text, at) : "";
+  if (std::regex_search(message, m, named))
+    return prefix + m[1].str();
+  if (std::regex_search(message, m, declared))
+    return prefix + (m[1].matched ? m[1].str() : m[2].str());
+  if (std::regex_search(message, m, subsection))
+    return prefix + (m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str());
+  return "(file)";
+}
+
+unsigned int count_stages(const std::string &text)
+{
+  const std::regex stage(R"(subsection\s+stage\s+([0-9]+))");
+  unsigned int n = 0;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), stage); it != std::sregex_iterator(); ++it)
+    n = std::max(n, static_cast<unsigned int>(std::min(1000ul, std::stoul((*it)[1].str().substr(0, 6)))));
+  return n;
+}
+
+void tree_to_prm(const boost::property_tree::ptree &tree, std::ostream &out, const std::string &path)
+{
+  for (const auto &[key, node] : tree) {
+    if (key.empty())
+      throw CaseError(path, "(file)", "JSON arrays are not case-file syntax: expected objects and values");
+    if (key.find_first_of("\n#") != std::string::npos)
+      throw CaseError(path, "(file)", "a JSON key contains a newline or '#'");
+    if (node.empty()) {
+      const std::string v = node.data();
+      if (v.find('\n') != std::string::npos)
+        throw CaseError(path, key, "a value must be on one line");
+      out << "set " << key << " = " << v << "\n";
+    } else {
+      out << "subsection " << key << "\n";
+      tree_to_prm(node, out, path);
+      out << "end\n";
+    }
+  }
+}
+
+std::string json_to_prm(const std::string &text, const std::string &path)
+{
+  boost::property_tree::ptree tree;
+  try {
+    std::istringstream in(text);
+    boost::property_tree::read_json(in, tree);
+  } catch (const boost::property_tree::json_parser_error &e) {
+    throw CaseError(path, "(file)", "not valid JSON at line " + std::to_string(e.line()) + ": " + e.message());
+  }
+  std::ostringstream out;
+  tree_to_prm(tree, out, path);
+  return out.str();
+}
+} // namespace
+
+CaseDescription read_case(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw CaseError(path, "(file)", "cannot be read: expected a readable .prm or .json case file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse_case(buffer.str(), path);
+}
+
+CaseDescription parse_case(const std::string &text, const std::string &path)
+{
+  CaseDescription c;
+  c.file = path;
+  c.text = text;
+  const bool json = path.size() >= 5 && path.substr(path.size() - 5) == ".json";
+  const bool prm_file = path.size() >= 4 && path.substr(path.size() - 4) == ".prm";
+  if (!json && !prm_file)
+    throw CaseError(path, "(file)", "expected a case file ending in .prm or .json");
+  if (c.text.find('\0') != std::string::npos)
+    throw CaseError(path, "(file)", "contains a NUL byte: expected a text case file");
+
+  // JSON is read as a tree and handed to ParameterHandler as the equivalent .prm, so
+  // both syntaxes get the same line-based messages naming the parameter.
+  std::string prm_text = c.text;
+  if (json)
+    prm_text = json_to_prm(c.text, path);
+
+  const unsigned int stages = count_stages(prm_text);
+  if (stages > 200)
+    throw CaseError(path, "program", "more than 200 stages: expected a smaller program");
+
+  ParameterHandler prm;
+  declare_all(prm, std::max(stages, 1u));
+  try {
+    std::istringstream s(prm_text);
+    prm.parse_input(s, path, "", false);
+  } catch (const ExceptionBase &e) {
+    const std::string msg = user_message(e.what(), path);
+    throw CaseError(path, parameter_in(msg, prm_text), msg);
+  } catch (const std::exception &e) {
+    throw CaseError(path, "(file)", user_message(e.what(), path));
+  }
+  if (stages == 0)
+    throw CaseError(path, "program/stage 1",
+                    "the loading program has no stage: expected 'subsection stage 1' in 'subsection program'");
+
+  const sections::Reader reader{path};
+  try {
+    c.title = prm.get("title");
+    c.engines = Utilities::split_string_list(prm.get("engines"));
+    c.seed = static_cast<unsigned long long>(prm.get_integer("seed"));
+    if (c.engines.empty())
+      reader.fail("engines", "expected at least one of dem, continuum, material-point");
+    c.specimen = sections::parse_specimen(prm, reader);
+    c.contact = sections::parse_contact(prm, reader);
+    c.dem = sections::parse_dem(prm, reader);
+    c.continuum = sections::parse_continuum(prm, reader);
+    c.program = sections::parse_program(prm, stages, reader);
+    c.output = sections::parse_output(prm, reader);
+  } catch (const ExceptionBase &e) {
+    const std::string msg = user_message(e.what(), path);
+    throw CaseError(path, parameter_in(msg, prm_text), msg);
+  }
+  return c;
+}
+
+namespace {
+/// Walks deal.II's JSON description of the declared parameters and writes a .prm with,
+/// for each entry, its help, the values it accepts and its default.
+void print_tree(const boost::property_tree::ptree &tree, std::ostream &out, int depth)
+{
+  const std::string indent(2 * depth, ' ');
+  for (const auto &[key, node] : tree) {
+    if (node.get_child_optional("default_value")) {
+      out << indent << "# " << node.get<std::string>("documentation", "") << "\n"
+          << indent << "# allowed: " << node.get<std::string>("pattern_description", "") << "\n"
+          << indent << "set " << key << " = " << node.get<std::string>("default_value", "") << "\n\n";
+    }
+  }
+  for (const auto &[key, node] : tree) {
+    if (!node.get_child_optional("default_value") && !node.empty()) {
+      out << indent << "subsection " << key << "\n";
+      print_tree(node, out, depth + 1);
+      out << indent << "end\n\n";
+    }
+  }
+}
+} // namespace
+
+std::string describe_parameters()
+{
+  ParameterHandler prm;
+  declare_all(prm, 1);
+  std::ostringstream json;
+  prm.print_parameters(json, ParameterHandler::OutputStyle(ParameterHandler::OutputStyle::JSON |
+                                                           ParameterHandler::OutputStyle::KeepDeclarationOrder));
+  boost::property_tree::ptree tree;
+  std::istringstream in(json.str());
+  boost::property_tree::read_json(in, tree);
+  std::ostringstream out;
+  out << "# geocomp case file parameters: every entry with its help, allowed values and default.\n"
+      << "# SI units. Program stresses and rates are tension positive; 'pressure' entries are\n"
+      << "# magnitudes, positive in compression. A program has 'subsection stage 1', 'stage 2', ...\n"
+      << "# each with the entries shown for stage 1.\n\n";
+  print_tree(tree, out, 0);
+  return out.str();
+}
+
+} // namespace geocomp

@@ -1,0 +1,117 @@
+#pragma once
+// The case file, as plain data: what a user writes, checked and converted to SI.
+//
+// A case file (.prm or .json, read by deal.II's ParameterHandler) has the sections
+// `specimen`, `contact`, `dem`, `continuum`, `program` and `output`. Every parameter is
+// declared once (CaseFile.cpp and the *Section.cpp files) with a default, a pattern
+// and a help text; `geocomp print-parameters` prints them all. Engines take these
+// structs, never the ParameterHandler, so the DEM core builds without deal.II.
+//
+// Conventions: SI units; stresses and strain rates in the program are tension
+// positive; quantities named "pressure" are magnitudes, positive in compression.
+#include "common/LoadingProgram.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace geocomp {
+
+/// Bad input: which file, which parameter, what was expected. Exit code 2.
+struct CaseError : std::runtime_error {
+  CaseError(std::string file, std::string parameter, const std::string &message)
+    : std::runtime_error(file + ": parameter '" + parameter + "': " + message),
+      file(std::move(file)), parameter(std::move(parameter)) {}
+  std::string file, parameter;
+};
+
+struct SpecimenParameters {
+  std::string source = "generate";      ///< generate | store | text
+  std::string store_file, store_name;   ///< for source = store
+  std::string text_file;                ///< for source = text (x y z r per line)
+  unsigned int particles = 2000;
+  double packing_fraction = 0.64;
+  double radius = 0.0118;               ///< [m] mean radius
+  std::string size_distribution = "monodisperse"; ///< monodisperse | uniform | lognormal-mass
+  double radius_spread = 0.0;           ///< uniform: half-width relative to the mean radius
+  double lognormal_sigma = 0.432;       ///< lognormal-mass: sigma of ln m (S4)
+  double box_size = 0.0;                ///< [m] L0; 0 = from N, eta and R
+  double density = 2650.0;              ///< [kg/m^3]
+  double isotropic_pressure = 2.0e6;    ///< [Pa] sigma_0, compression positive
+  bool aristotelian = false;            ///< first-order (overdamped) packing dynamics
+};
+
+struct ContactParameters {
+  std::string model = "linear";         ///< linear (S0) | hertz-mindlin (S4)
+  double youngs_modulus = 7.0e9;        ///< [Pa] particle E
+  double poisson_ratio = 0.25;
+  double impact_velocity = 1.0;         ///< [m/s] V_c in S0's k_n
+  double restitution = 0.5;             ///< c_r
+  double normal_stiffness = 0.0;        ///< [N/m] given directly; 0 = from E*, R*, m*, V_c
+  double normal_damping = 0.0;          ///< [N s/m] given directly; 0 = from c_r
+  double tangential_stiffness_ratio = 2.0 / 7.0; ///< k_t / k_n
+  double particle_friction = 0.4;       ///< mu_s
+  double wall_friction = 0.0;           ///< mu_p
+};
+
+struct DemParameters {
+  double time_step_safety = 0.2;        ///< dt = safety * critical step
+  unsigned int threads = 0;             ///< 0 = OpenMP default
+  double local_damping = 0.0;           ///< Cundall non-viscous damping while loading
+  double skin = 0.1;                    ///< Verlet skin / mean diameter
+  double servo_max_velocity = 0.05;     ///< [m/s] cap on a servo wall's speed
+  double servo_gain = 0.5;              ///< fraction of the stiffness-based correction per step
+  unsigned int snapshots = 4;           ///< particle snapshots for localization analysis
+};
+
+/// A piecewise-linear function of the equivalent plastic strain kappa.
+struct HardeningTable {
+  std::vector<std::pair<double, double>> points; ///< (kappa, value), kappa increasing from 0
+  double operator()(double kappa) const;
+};
+
+struct ContinuumParameters {
+  std::string model = "mohr-coulomb";   ///< mohr-coulomb | drucker-prager
+  std::string dp_matching = "outer";    ///< outer | inner | plane-strain
+  double youngs_modulus = 200.0e6;      ///< [Pa]
+  double poisson_ratio = 0.25;
+  HardeningTable cohesion;              ///< [Pa]
+  HardeningTable friction_angle;        ///< [deg]
+  HardeningTable dilatancy_angle;       ///< [deg]
+  unsigned int cells_per_edge = 4;
+  unsigned int degree = 1;
+  double imperfection_radius = 0.0;     ///< [m]; 0 = none
+  double imperfection_factor = 0.9;     ///< cohesion multiplier inside it
+  std::vector<double> imperfection_centre{0.5, 0.5, 0.5}; ///< relative to L0
+  std::string regularization = "crack-band"; ///< crack-band | none
+  double reference_element_size = 0.0;  ///< [m] for crack-band; 0 = L0/cells_per_edge at the coarsest
+};
+
+struct OutputParameters {
+  std::string directory = "results";
+  bool report = true;
+  bool fields = true;                   ///< VTU / XDMF field output
+};
+
+struct CaseDescription {
+  std::string file;                     ///< as given on the command line
+  std::string text;                     ///< whole file, stored in every results file
+  std::string title;
+  std::vector<std::string> engines;     ///< dem, continuum, material-point
+  unsigned long long seed = 1;
+  SpecimenParameters specimen;
+  ContactParameters contact;
+  DemParameters dem;
+  ContinuumParameters continuum;
+  LoadingProgram program;
+  OutputParameters output;
+};
+
+/// Reads and validates a case file; throws CaseError (never leaves anything behind).
+CaseDescription read_case(const std::string &path);
+/// The same for a case file's text; `path` names it in messages and picks .prm/.json.
+CaseDescription parse_case(const std::string &text, const std::string &path);
+/// Every parameter with default, pattern and help text, as a .prm with comments.
+std::string describe_parameters();
+
+} // namespace geocomp

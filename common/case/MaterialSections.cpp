@@ -1,0 +1,203 @@
+// The `contact`, `dem` and `continuum` sections: the two engines' material descriptions.
+#include "common/case/Sections.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace geocomp::sections {
+
+using dealii::Patterns::Anything;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::List;
+using dealii::Patterns::Selection;
+
+
+void declare_contact(dealii::ParameterHandler &prm)
+{
+  prm.enter_subsection("contact");
+  prm.declare_entry("model", "linear", Selection("linear|hertz-mindlin"),
+                    "'linear': S0 eq. (1)-(2) spring-dashpot with Coulomb cap; 'hertz-mindlin': S4 eq. (15)-(19).");
+  prm.declare_entry("youngs modulus", "7e9", Double(1e3, 1e13), "Particle Young's modulus E [Pa].");
+  prm.declare_entry("poisson ratio", "0.25", Double(0, 0.4999), "Particle Poisson ratio nu.");
+  prm.declare_entry("impact velocity", "1.0", Double(1e-6, 1e4),
+                    "Characteristic impact velocity V_c [m/s] in S0's k_n formula.");
+  prm.declare_entry("restitution", "0.5", Double(1e-6, 1.0), "Coefficient of restitution c_r in (0, 1].");
+  prm.declare_entry("normal stiffness", "0", Double(0, 1e15),
+                    "k_n [N/m] given directly (as LIGGGHTS hooke/stiffness); 0 = S0 formula from E*, R*, m*, V_c.");
+  prm.declare_entry("normal damping", "0", Double(0, 1e12),
+                    "c_n [N s/m] given directly; 0 = S0 formula from the restitution.");
+  prm.declare_entry("tangential stiffness ratio", "0.285714285714", Double(0, 10), "k_t / k_n.");
+  prm.declare_entry("particle friction", "0.4", Double(0, 100), "Inter-particle Coulomb friction mu_s.");
+  prm.declare_entry("wall friction", "0", Double(0, 100), "Particle-wall friction mu_p (S0: 0).");
+  prm.leave_subsection();
+}
+
+ContactParameters parse_contact(dealii::ParameterHandler &prm, const Reader &)
+{
+  ContactParameters p;
+  prm.enter_subsection("contact");
+  p.model = prm.get("model");
+  p.youngs_modulus = prm.get_double("youngs modulus");
+  p.poisson_ratio = prm.get_double("poisson ratio");
+  p.impact_velocity = prm.get_double("impact velocity");
+  p.restitution = prm.get_double("restitution");
+  p.normal_stiffness = prm.get_double("normal stiffness");
+  p.normal_damping = prm.get_double("normal damping");
+  p.tangential_stiffness_ratio = prm.get_double("tangential stiffness ratio");
+  p.particle_friction = prm.get_double("particle friction");
+  p.wall_friction = prm.get_double("wall friction");
+  prm.leave_subsection();
+  return p;
+}
+
+void declare_dem(dealii::ParameterHandler &prm)
+{
+  prm.enter_subsection("dem");
+  prm.declare_entry("time step safety", "0.2", Double(1e-4, 1.0),
+                    "Time step as a fraction of the critical step (sqrt(m/k) or S4's Rayleigh step).");
+  prm.declare_entry("threads", "0", Integer(0, 1024), "OpenMP threads; 0 = the OpenMP default.");
+  prm.declare_entry("local damping", "0", Double(0, 0.99),
+                    "Cundall local non-viscous damping while loading (0 = off; S0 loads without it).");
+  prm.declare_entry("skin", "0.1", Double(0.001, 2.0), "Verlet skin as a fraction of the mean diameter.");
+  prm.declare_entry("servo max velocity", "0.05", Double(1e-9, 100), "Speed cap of a servo-controlled wall [m/s].");
+  prm.declare_entry("servo gain", "0.5", Double(1e-6, 1.0),
+                    "Fraction of the stiffness-based stress correction applied per step.");
+  prm.declare_entry("snapshots", "4", Integer(0, 10000), "Particle snapshots kept for localization analysis.");
+  prm.leave_subsection();
+}
+
+DemParameters parse_dem(dealii::ParameterHandler &prm, const Reader &)
+{
+  DemParameters p;
+  prm.enter_subsection("dem");
+  p.time_step_safety = prm.get_double("time step safety");
+  p.threads = prm.get_integer("threads");
+  p.local_damping = prm.get_double("local damping");
+  p.skin = prm.get_double("skin");
+  p.servo_max_velocity = prm.get_double("servo max velocity");
+  p.servo_gain = prm.get_double("servo gain");
+  p.snapshots = prm.get_integer("snapshots");
+  prm.leave_subsection();
+  return p;
+}
+
+void declare_continuum(dealii::ParameterHandler &prm)
+{
+  prm.enter_subsection("continuum");
+  prm.declare_entry("model", "mohr-coulomb", Selection("mohr-coulomb|drucker-prager"),
+                    "Constitutive model: Mohr-Coulomb with hardening/softening, or Drucker-Prager.");
+  prm.declare_entry("drucker prager matching", "outer", Selection("outer|inner|plane-strain"),
+                    "How Drucker-Prager is matched to the Mohr-Coulomb c and phi.");
+  prm.declare_entry("youngs modulus", "200e6", Double(1e3, 1e13), "Young's modulus E [Pa].");
+  prm.declare_entry("poisson ratio", "0.25", Double(0, 0.4999), "Poisson ratio nu.");
+  prm.declare_entry("cohesion", "0:1e5", Anything(),
+                    "Cohesion c(kappa) [Pa], piecewise linear: 'kappa:value, kappa:value, ...', kappa from 0 "
+                    "increasing; constant beyond the last point.");
+  prm.declare_entry("friction angle", "0:30", Anything(), "Friction angle phi(kappa) [deg], same format.");
+  prm.declare_entry("dilatancy angle", "0:5", Anything(),
+                    "Dilatancy angle psi(kappa) [deg], same format; psi <= phi (non-associated flow).");
+  prm.declare_entry("cells per edge", "4", Integer(1, 512), "Hexahedra per cube edge.");
+  prm.declare_entry("degree", "1", Integer(1, 4), "Polynomial degree of the FE_Q displacement.");
+  prm.declare_entry("imperfection radius", "0", Double(0, 1e3),
+                    "Radius [m] of a weaker zone that triggers a band; 0 = none.");
+  prm.declare_entry("imperfection factor", "0.9", Double(0.01, 1.0), "Cohesion multiplier inside the weaker zone.");
+  prm.declare_entry("imperfection centre", "0.5, 0.5, 0.5", List(Double(0, 1), 3, 3),
+                    "Centre of the weaker zone, as fractions of L0.");
+  prm.declare_entry("regularization", "crack-band", Selection("crack-band|none"),
+                    "Softening regularization: scale the softening by element size (crack band) or none.");
+  prm.declare_entry("reference element size", "0", Double(0, 1e3),
+                    "Element size [m] at which the softening table holds as written; 0 = L0 / 4.");
+  prm.leave_subsection();
+}
+
+HardeningTable parse_table(const std::string &text, const std::string &parameter, const Reader &r)
+{
+  HardeningTable t;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos)
+      r.fail(parameter, "expected 'kappa:value' pairs separated by commas, got '" + item + "'");
+    double k = 0, v = 0;
+    try {
+      std::size_t u1 = 0, u2 = 0;
+      const std::string ks = item.substr(0, colon), vs = item.substr(colon + 1);
+      k = std::stod(ks, &u1);
+      v = std::stod(vs, &u2);
+      if (ks.find_first_not_of(" \t", u1) != std::string::npos || vs.find_first_not_of(" \t", u2) != std::string::npos)
+        throw std::invalid_argument(item);
+    } catch (const std::exception &) {
+      r.fail(parameter, "expected numbers in 'kappa:value', got '" + item + "'");
+    }
+    if (!std::isfinite(k) || !std::isfinite(v))
+      r.fail(parameter, "expected finite numbers, got '" + item + "'");
+    if (!t.points.empty() && !(k > t.points.back().first))
+      r.fail(parameter, "kappa must increase strictly from one point to the next");
+    t.points.emplace_back(k, v);
+  }
+  if (t.points.empty())
+    r.fail(parameter, "expected at least one 'kappa:value' point");
+  if (t.points.front().first != 0.0)
+    r.fail(parameter, "the first point must be at kappa = 0");
+  return t;
+}
+
+ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader &r)
+{
+  ContinuumParameters p;
+  prm.enter_subsection("continuum");
+  p.model = prm.get("model");
+  p.dp_matching = prm.get("drucker prager matching");
+  p.youngs_modulus = prm.get_double("youngs modulus");
+  p.poisson_ratio = prm.get_double("poisson ratio");
+  p.cohesion = parse_table(prm.get("cohesion"), "continuum/cohesion", r);
+  p.friction_angle = parse_table(prm.get("friction angle"), "continuum/friction angle", r);
+  p.dilatancy_angle = parse_table(prm.get("dilatancy angle"), "continuum/dilatancy angle", r);
+  p.cells_per_edge = prm.get_integer("cells per edge");
+  p.degree = prm.get_integer("degree");
+  p.imperfection_radius = prm.get_double("imperfection radius");
+  p.imperfection_factor = prm.get_double("imperfection factor");
+  p.imperfection_centre = dealii::Utilities::string_to_double(
+    dealii::Utilities::split_string_list(prm.get("imperfection centre")));
+  p.regularization = prm.get("regularization");
+  p.reference_element_size = prm.get_double("reference element size");
+  prm.leave_subsection();
+  for (const auto &[k, c] : p.cohesion.points)
+    if (c < 0)
+      r.fail("continuum/cohesion", "cohesion must be >= 0 Pa");
+  for (const auto &[k, phi] : p.friction_angle.points)
+    if (phi < 0 || phi >= 90)
+      r.fail("continuum/friction angle", "expected angles in [0, 90) degrees");
+  for (const auto &[k, psi] : p.dilatancy_angle.points)
+    if (psi < 0 || psi >= 90)
+      r.fail("continuum/dilatancy angle", "expected angles in [0, 90) degrees");
+  for (const auto &[k, psi] : p.dilatancy_angle.points)
+    if (psi > p.friction_angle(k) + 1e-12)
+      r.fail("continuum/dilatancy angle", "psi must not exceed phi at the same kappa (got psi > phi at kappa = " +
+                                            std::to_string(k) + ")");
+  return p;
+}
+
+} // namespace geocomp::sections
+
+namespace geocomp {
+
+double HardeningTable::operator()(double kappa) const
+{
+  if (points.empty())
+    return 0.0;
+  if (kappa <= points.front().first)
+    return points.front().second;
+  for (std::size_t i = 1; i < points.size(); ++i)
+    if (kappa <= points[i].first) {
+      const auto &[k0, v0] = points[i - 1];
+      const auto &[k1, v1] = points[i];
+      return v0 + (v1 - v0) * (kappa - k0) / (k1 - k0);
+    }
+  return points.back().second;
+}
+
+} // namespace geocomp

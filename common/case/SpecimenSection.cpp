@@ -1,0 +1,92 @@
+// The `specimen` and `output` sections.
+#include "common/case/Sections.h"
+
+namespace geocomp::sections {
+
+using dealii::Patterns::Bool;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+using dealii::Patterns::Anything;
+
+void declare_specimen(dealii::ParameterHandler &prm)
+{
+  prm.enter_subsection("specimen");
+  prm.declare_entry("source", "generate", Selection("generate|store|text"),
+                    "Where the DEM specimen comes from: 'generate' (radius growth, S0), 'store' "
+                    "(a specimen from an HDF5 core store), 'text' (x y z r per line, box in the header).");
+  prm.declare_entry("store file", "", Anything(), "Core store (HDF5) for source = store.");
+  prm.declare_entry("store name", "", Anything(), "Specimen name inside the store.");
+  prm.declare_entry("text file", "", Anything(), "Packing file for source = text (the format of bench/*.xyzr).");
+  prm.declare_entry("particles", "2000", Integer(8, 10000000), "Number of spheres N (S0 reference: 100000).");
+  prm.declare_entry("packing fraction", "0.64", Double(0.30, 0.7405),
+                    "Target packing fraction eta (S0: 0.6 <= eta < 0.7405; reference 0.69).");
+  prm.declare_entry("radius", "0.0118", Double(1e-6, 10), "Mean sphere radius R [m] (S0: 11.8 mm).");
+  prm.declare_entry("size distribution", "monodisperse", Selection("monodisperse|uniform|lognormal-mass"),
+                    "Radii: equal, uniform in radius (see 'radius spread'), or lognormal by mass (S4).");
+  prm.declare_entry("radius spread", "0", Double(0, 0.9),
+                    "For 'uniform': half-width of the radius range relative to the mean radius.");
+  prm.declare_entry("lognormal sigma", "0.432", Double(0, 3), "For 'lognormal-mass': sigma of ln m (S4: 0.432).");
+  prm.declare_entry("box size", "0", Double(0, 1e3),
+                    "Cube edge L0 [m]; 0 derives it from N, eta and R (S0 reference: 1.0 m).");
+  prm.declare_entry("density", "2650", Double(1, 1e5), "Particle density [kg/m^3].");
+  prm.declare_entry("isotropic pressure", "2e6", Double(0, 1e10),
+                    "All-round pre-stress sigma_0 [Pa], compression positive (S0: 8.093 MPa; 2 MPa).");
+  prm.declare_entry("aristotelian", "false", Bool(),
+                    "Pack with first-order (overdamped, velocity proportional to force) dynamics.");
+  prm.leave_subsection();
+}
+
+SpecimenParameters parse_specimen(dealii::ParameterHandler &prm, const Reader &r)
+{
+  SpecimenParameters p;
+  prm.enter_subsection("specimen");
+  p.source = prm.get("source");
+  p.store_file = prm.get("store file");
+  p.store_name = prm.get("store name");
+  p.text_file = prm.get("text file");
+  p.particles = prm.get_integer("particles");
+  p.packing_fraction = prm.get_double("packing fraction");
+  p.radius = prm.get_double("radius");
+  p.size_distribution = prm.get("size distribution");
+  p.radius_spread = prm.get_double("radius spread");
+  p.lognormal_sigma = prm.get_double("lognormal sigma");
+  p.box_size = prm.get_double("box size");
+  p.density = prm.get_double("density");
+  p.isotropic_pressure = prm.get_double("isotropic pressure");
+  p.aristotelian = prm.get_bool("aristotelian");
+  prm.leave_subsection();
+  if (p.source == "store" && (p.store_file.empty() || p.store_name.empty()))
+    r.fail(p.store_file.empty() ? "specimen/store file" : "specimen/store name",
+           "source = store needs both 'store file' and 'store name'");
+  if (p.source == "text" && p.text_file.empty())
+    r.fail("specimen/text file", "source = text needs a packing file");
+  if (p.size_distribution == "uniform" && p.radius_spread <= 0.0)
+    r.fail("specimen/radius spread", "a uniform size distribution needs a spread > 0");
+  return p;
+}
+
+void declare_output(dealii::ParameterHandler &prm)
+{
+  prm.enter_subsection("output");
+  prm.declare_entry("directory", "results", Anything(),
+                    "Folder for results (HDF5 per engine, fields, report); relative to the working directory.");
+  prm.declare_entry("report", "true", Bool(), "Write the comparison report (HTML + plots + metrics.json).");
+  prm.declare_entry("fields", "true", Bool(), "Write field output (VTU for the continuum, HDF5+XDMF for DEM).");
+  prm.leave_subsection();
+}
+
+OutputParameters parse_output(dealii::ParameterHandler &prm, const Reader &r)
+{
+  OutputParameters p;
+  prm.enter_subsection("output");
+  p.directory = prm.get("directory");
+  p.report = prm.get_bool("report");
+  p.fields = prm.get_bool("fields");
+  prm.leave_subsection();
+  if (p.directory.empty())
+    r.fail("output/directory", "expected a folder name");
+  return p;
+}
+
+} // namespace geocomp::sections

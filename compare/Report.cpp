@@ -1,0 +1,467 @@
+#include "compare/Report.h"
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace geocomp::compare {
+
+namespace fs = std::filesystem;
+
+std::string format_number(double v)
+{
+  if (!std::isfinite(v))
+    return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+namespace {
+
+std::string json_string(const std::string &s)
+{
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else
+      out += static_cast<char>(c);
+  }
+  return out + "\"";
+}
+
+std::string html(const std::string &s)
+{
+  std::string out;
+  for (char c : s)
+    switch (c) {
+    case '&': out += "&amp;"; break;
+    case '<': out += "&lt;"; break;
+    case '>': out += "&gt;"; break;
+    case '"': out += "&quot;"; break;
+    default: out += c;
+    }
+  return out;
+}
+
+/// RFC 6901 escaping of one pointer token.
+std::string pointer_token(const std::string &s)
+{
+  std::string out;
+  for (char c : s)
+    out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+  return out;
+}
+
+/// A numeric table cell bound to its JSON location.
+std::string num_cell(double v, const std::string &path)
+{
+  return "<td class=\"num\" data-path=\"" + html(path) + "\">" +
+         (std::isfinite(v) ? format_number(v) : std::string("&mdash;")) + "</td>";
+}
+
+std::string difference_label(const ReportInput &in, std::size_t k)
+{
+  return in.metrics[k].label + " - " + in.metrics[0].label;
+}
+
+double difference(const MetricValue &a, const MetricValue &ref) { return a.value - ref.value; }
+
+/// Onset fields shown for a source, in display units.
+struct OnsetDisplay {
+  double strain_pct, angle_deg;
+};
+OnsetDisplay display(const OnsetEstimate &e)
+{
+  return {e.found ? e.strain * 100.0 : NAN, e.found && e.has_angle ? e.angle_deg : NAN};
+}
+
+std::string slug(std::size_t k) { return "r" + std::to_string(k); }
+
+CurveKind report_kind(const ReportInput &in)
+{
+  if (in.kind != CurveKind::Auto)
+    return in.kind;
+  if (!in.metrics.empty())
+    return in.metrics.front().metrics.kind;
+  if (!in.responses.empty())
+    return guess_curve_kind(in.responses.front().response);
+  return CurveKind::ShearIsochoric;
+}
+
+bool gnuplot_available(const std::string &program)
+{
+  if (program.empty())
+    return false;
+  if (program.find('/') != std::string::npos)
+    return ::access(program.c_str(), X_OK) == 0;
+  const std::string cmd = "command -v '" + program + "' > /dev/null 2>&1";
+  return std::system(cmd.c_str()) == 0;
+}
+
+std::string shell_quote(const std::string &s)
+{
+  std::string out = "'";
+  for (char c : s)
+    out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+const char *colour(std::size_t k)
+{
+  static const char *c[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+  return c[k % 6];
+}
+
+void write_text(const fs::path &p, const std::string &text)
+{
+  std::ofstream f(p);
+  f << text;
+  if (!f)
+    throw std::runtime_error("cannot write " + p.string());
+}
+
+/// Data files and the gnuplot script; returns the PNG names the script makes.
+std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path &dir, std::string &script)
+{
+  const CurveKind kind = report_kind(in);
+  const bool shear = kind == CurveKind::ShearIsochoric;
+  fs::create_directories(dir / "data");
+  std::vector<std::string> curves_ok;
+  std::vector<std::pair<std::size_t, Curve>> curves;
+  for (std::size_t k = 0; k < in.responses.size(); ++k) {
+    try {
+      curves.emplace_back(k, extract_curve(in.responses[k].response, kind, in.stage));
+    } catch (const std::exception &) {
+      continue; // a response without that stage gets no curve
+    }
+  }
+  for (const auto &[k, c] : curves) {
+    std::ostringstream main, br;
+    main << "# x[%] y[MPa] gamma_max[%] eps_v[%](dilation+) p[MPa](compression+) q[MPa]\n";
+    for (std::size_t i = 0; i < c.x.size(); ++i)
+      main << c.x[i] * 100 << ' ' << c.y[i] * 1e-6 << ' ' << c.gamma[i] * 100 << ' ' << c.eps_v[i] * 100 << ' '
+           << -c.p[i] * 1e-6 << ' ' << c.q[i] * 1e-6 << '\n';
+    br << "# unloading branches, one block each: x[%] y[MPa]\n";
+    for (const auto &b : c.branches) {
+      for (std::size_t i = 0; i < b.x.size(); ++i)
+        br << b.x[i] * 100 << ' ' << b.y[i] * 1e-6 << '\n';
+      br << "\n";
+    }
+    if (c.branches.empty())
+      br << "nan nan\n";
+    write_text(dir / "data" / (slug(k) + "_main.dat"), main.str());
+    write_text(dir / "data" / (slug(k) + "_branches.dat"), br.str());
+  }
+  // Elastic limit and peak markers of each metric set whose label matches a response.
+  std::ostringstream marks;
+  marks << "# x[%] y[MPa] per response label, block per label\n";
+  std::vector<std::size_t> with_marks;
+  for (const auto &[k, c] : curves)
+    for (const auto &nm : in.metrics)
+      if (nm.label == in.responses[k].label) {
+        marks << nm.metrics.elastic_limit_strain * 100 << ' ' << nm.metrics.elastic_limit_stress * 1e-6 << '\n'
+              << nm.metrics.peak_strain * 100 << ' ' << nm.metrics.peak_stress * 1e-6 << "\n\n\n";
+        with_marks.push_back(k);
+        break;
+      }
+  write_text(dir / "data" / "marks.dat", marks.str());
+
+  std::vector<std::string> pngs;
+  std::ostringstream gp;
+  gp << "# Generated by geocomp compare: run `gnuplot report.gp` in this folder.\n"
+     << "set terminal pngcairo size 960,680 enhanced font 'DejaVu Sans,12' linewidth 1.5\n"
+     << "set grid lc rgb '#dddddd'\nset key top right box opaque\nset datafile missing 'nan'\n";
+  const std::string xl = shear ? "{/Symbol g}_{max} [%]" : "axial strain -{/Symbol e}_z [%] (compression +)";
+  const std::string yl = shear ? "{/Symbol t}_{max} [MPa]" : "axial stress -{/Symbol s}_z [MPa] (compression +)";
+  auto plot_list = [&](const std::string &using_main, bool branches, bool marks_too) {
+    std::ostringstream p;
+    bool first = true;
+    for (const auto &[k, c] : curves) {
+      const std::string lab = in.responses[k].label;
+      p << (first ? "plot " : ", \\\n     ") << "'data/" << slug(k) << "_main.dat' using " << using_main
+        << " with lines lw 2 lc rgb '" << colour(k) << "' title '" << lab << "'";
+      first = false;
+      if (branches && !c.branches.empty())
+        p << ", \\\n     'data/" << slug(k) << "_branches.dat' using 1:2 with lines dt 2 lw 1 lc rgb '"
+          << colour(k) << "' title '" << lab << " unloading'";
+    }
+    if (marks_too)
+      for (std::size_t m = 0; m < with_marks.size(); ++m)
+        p << ", \\\n     'data/marks.dat' index " << m << " every ::0::0 using 1:2 with points pt 7 ps 1.6 lc rgb '"
+          << colour(with_marks[m]) << "' title '" << (m == 0 ? "elastic limit" : "") << "'"
+          << ", \\\n     'data/marks.dat' index " << m << " every ::1::1 using 1:2 with points pt 9 ps 1.8 lc rgb '"
+          << colour(with_marks[m]) << "' title '" << (m == 0 ? "peak" : "") << "'";
+    return p.str() + "\n";
+  };
+  if (!curves.empty()) {
+    gp << "\nset output 'stress_strain.png'\nset title '" << (shear ? "Shear at constant volume: " : "Constant lateral pressure: ")
+       << "stress-strain with unloading branches'\nset xlabel '" << xl << "'\nset ylabel '" << yl << "'\n"
+       << plot_list("1:2", true, true);
+    pngs.push_back("stress_strain.png");
+    gp << "\nset output 'volumetric.png'\nset title 'Volumetric strain'\nset xlabel '" << xl
+       << "'\nset ylabel 'volumetric strain {/Symbol e}_v [%] (dilation +)'\n" << plot_list("1:4", false, false);
+    pngs.push_back("volumetric.png");
+    gp << "\nset output 'stress_path.png'\nset title 'Stress path'\nset key top left box opaque\n"
+       << "set xlabel 'mean stress p [MPa] (compression +)'\nset ylabel 'deviator q = {/Symbol \\326}(3J_2) [MPa]'\n"
+       << "set xrange [0:*]\nset yrange [0:*]\nset offsets 0, graph 0.08, graph 0.05, 0\n"
+       << plot_list("5:6", false, false) << "set autoscale\nset offsets 0, 0, 0, 0\nset key top right box opaque\n";
+    pngs.push_back("stress_path.png");
+  }
+  for (std::size_t m = 0; m < in.maps.size(); ++m) {
+    const auto &map = in.maps[m];
+    std::ostringstream d;
+    d << "# x[m] z[m] " << map.component << "[mm]\n";
+    for (std::size_t i = 0; i < map.x.size(); ++i)
+      d << map.x[i] << ' ' << map.z[i] << ' ' << map.u[i] * 1e3 << '\n';
+    const std::string name = "map" + std::to_string(m);
+    write_text(dir / "data" / (name + ".dat"), d.str());
+    std::string title = map.title;
+    for (auto &ch : title)
+      if (ch == '\'')
+        ch = '`';
+    gp << "\nset output '" << name << ".png'\nset title '" << title << "'\nset size ratio -1\nunset key\n"
+       << "set xlabel 'x [m]'\nset ylabel 'z [m]'\nset cblabel '" << map.component << " [mm]'\n"
+       << "set palette defined (0 '#313695', 1 '#74add1', 2 '#ffffbf', 3 '#f46d43', 4 '#a50026')\n"
+       << "plot 'data/" << name << ".dat' using 1:2:3 with points pt 5 ps 0.9 palette\n"
+       << "set size noratio\nset key top right box opaque\nunset cblabel\n";
+    pngs.push_back(name + ".png");
+  }
+  script = gp.str();
+  return pngs;
+}
+
+std::string build_html(const ReportInput &in, const std::vector<std::string> &pngs, const std::string &plot_message)
+{
+  const CurveKind kind = report_kind(in);
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html(in.title)
+    << "</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
+       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:4px 8px}"
+       "td.num{text-align:right;font-family:monospace}th{background:#eee}img{max-width:49%;margin:2px}"
+       ".note{color:#a33}</style></head><body>\n";
+  h << "<h1>" << html(in.title) << "</h1>\n";
+  if (!in.case_name.empty())
+    h << "<p>Case: <code>" << html(in.case_name) << "</code></p>\n";
+  h << "<p>Curve: " << (kind == CurveKind::ShearIsochoric
+                          ? "&tau;<sub>max</sub> &ndash; &gamma;<sub>max</sub> (isochoric shear, S0 program 1)"
+                          : "&sigma;<sub>z</sub> &ndash; &epsilon;<sub>z</sub> at constant lateral pressure "
+                            "(S0 program 2), <b>compression positive</b>")
+    << ". Strains from the start of the analysed stage; units MPa, %, degrees. Computed tension positive "
+       "inside geocomp; volumetric strain is shown dilation positive, p compression positive. "
+       "Definitions: docs/metrics.md. Numbers also in <a href=\"metrics.json\">metrics.json</a>.</p>\n";
+  for (const auto &n : in.notes)
+    h << "<p class=\"note\">" << html(n) << "</p>\n";
+
+  h << "<h2>Plots</h2>\n";
+  if (!plot_message.empty())
+    h << "<p class=\"note\">" << html(plot_message) << "</p>\n";
+  for (const auto &p : pngs)
+    h << "<a href=\"" << html(p) << "\"><img src=\"" << html(p) << "\" alt=\"" << html(p) << "\"></a>\n";
+
+  if (!in.metrics.empty()) {
+    h << "<h2>Metrics</h2>\n<table id=\"metrics\"><tr><th>metric</th><th>units</th>";
+    for (const auto &m : in.metrics)
+      h << "<th>" << html(m.label) << "</th>";
+    for (std::size_t k = 1; k < in.metrics.size(); ++k)
+      h << "<th>" << html(difference_label(in, k)) << "</th>";
+    h << "</tr>\n";
+    std::vector<std::vector<MetricValue>> tables;
+    for (const auto &m : in.metrics)
+      tables.push_back(metric_table(m.metrics));
+    for (std::size_t r = 0; r < tables[0].size(); ++r) {
+      h << "<tr><td>" << html(tables[0][r].label) << "</td><td>" << html(tables[0][r].units) << "</td>";
+      for (std::size_t k = 0; k < tables.size(); ++k)
+        h << num_cell(tables[k][r].value,
+                      "metrics/" + pointer_token(in.metrics[k].label) + "/" + pointer_token(tables[k][r].key));
+      for (std::size_t k = 1; k < tables.size(); ++k)
+        h << num_cell(difference(tables[k][r], tables[0][r]),
+                      "differences/" + pointer_token(difference_label(in, k)) + "/" + pointer_token(tables[0][r].key));
+      h << "</tr>\n";
+    }
+    h << "<tr><td>elastic limit method</td><td></td>";
+    for (const auto &m : in.metrics)
+      h << "<td>" << html(m.metrics.elastic_limit_method.empty() ? "none" : m.metrics.elastic_limit_method) << "</td>";
+    h << "</tr>\n</table>\n";
+    for (const auto &m : in.metrics) {
+      if (m.metrics.notes.empty())
+        continue;
+      h << "<p><b>" << html(m.label) << "</b> notes:</p><ul>";
+      for (const auto &n : m.metrics.notes)
+        h << "<li>" << html(n) << "</li>";
+      h << "</ul>\n";
+    }
+  }
+
+  if (in.verdict) {
+    const RrVerdict &v = *in.verdict;
+    h << "<h2>Rudnicki&ndash;Rice verdict</h2>\n<p>" << html(v.summary)
+      << " Angle: band normal from the most compressive principal axis. Tolerances: onset within max("
+      << format_number(v.tolerances.strain_relative * 100) << " % of the prediction, "
+      << format_number(v.tolerances.strain_absolute * 100) << " % strain), angle within "
+      << format_number(v.tolerances.angle_deg) << "&deg;.</p>\n"
+      << "<table id=\"verdict\"><tr><th>source</th><th>onset strain [%]</th><th>angle [deg]</th>"
+         "<th>&Delta; strain [%]</th><th>&Delta; strain rel. [%]</th><th>&Delta; angle [deg]</th><th>verdict</th></tr>\n";
+    const OnsetDisplay p = display(v.predicted);
+    h << "<tr><td>" << html(v.predicted.source) << " (prediction)</td>" << num_cell(p.strain_pct, "rudnicki_rice/predicted/onset_strain_pct")
+      << num_cell(p.angle_deg, "rudnicki_rice/predicted/angle_deg") << "<td></td><td></td><td></td><td>"
+      << html(v.predicted.found ? v.predicted.note : "no onset predicted") << "</td></tr>\n";
+    for (std::size_t k = 0; k < v.rows.size(); ++k) {
+      const auto &r = v.rows[k];
+      const OnsetDisplay d = display(r.onset);
+      const std::string base = "rudnicki_rice/rows/" + std::to_string(k) + "/";
+      h << "<tr><td>" << html(r.onset.source) << "</td>" << num_cell(d.strain_pct, base + "onset_strain_pct")
+        << num_cell(d.angle_deg, base + "angle_deg")
+        << num_cell(r.comparable ? r.strain_difference * 100 : NAN, base + "strain_difference_pct")
+        << num_cell(r.comparable ? r.strain_relative * 100 : NAN, base + "strain_relative_pct")
+        << num_cell(r.comparable ? r.angle_difference_deg : NAN, base + "angle_difference_deg") << "<td>"
+        << html(r.verdict) << "</td></tr>\n";
+    }
+    h << "</table>\n";
+  }
+
+  if (!in.calibrated_parameters.empty()) {
+    h << "<h2>Calibrated continuum parameters</h2>\n<table id=\"calibration\"><tr><th>parameter</th><th>value</th></tr>\n";
+    for (const auto &[k, val] : in.calibrated_parameters)
+      h << "<tr><td>" << html(k) << "</td><td>" << html(val) << "</td></tr>\n";
+    h << "</table>\n";
+  }
+  h << "<h2>Definitions</h2>\n<ul>"
+       "<li>Initial modulus: least-squares slope over y &minus; y<sub>0</sub> &le; 25 % of the peak rise.</li>"
+       "<li>Elastic limit: where the residual strain after unloading reaches 1 % (S0), interpolated between "
+       "branches; without branches, where the curve leaves the initial line by 2 % of the peak rise.</li>"
+       "<li>Softening modulus: least-squares slope over 20&ndash;80 % of the drop from peak to residual; "
+       "residual: mean over the last 10 % of the post-peak strain.</li>"
+       "<li>Dilatancy: sin &psi; = d&epsilon;<sub>v</sub><sup>p</sup>/d&gamma;<sup>p</sup> around the peak; "
+       "friction: sin &phi; = (&sigma;<sub>1</sub>&minus;&sigma;<sub>3</sub>)/(&sigma;<sub>1</sub>+&sigma;<sub>3</sub>), c = 0.</li>"
+       "</ul>\n</body></html>\n";
+  return h.str();
+}
+
+} // namespace
+
+std::string metrics_json(const ReportInput &in)
+{
+  std::ostringstream j;
+  j << "{\n  \"format\": \"geocomp-metrics-1\",\n  \"title\": " << json_string(in.title)
+    << ",\n  \"case\": " << json_string(in.case_name) << ",\n  \"curve\": " << json_string(to_string(report_kind(in)))
+    << ",\n  \"convention\": "
+    << json_string("units MPa, %, deg; strains from the stage start; axial curve compression positive; "
+                   "volumetric strain dilation positive")
+    << ",\n  \"metrics\": {";
+  for (std::size_t k = 0; k < in.metrics.size(); ++k) {
+    const auto &m = in.metrics[k];
+    j << (k ? "," : "") << "\n    " << json_string(m.label) << ": {\n      \"engine\": " << json_string(m.metrics.engine)
+      << ",\n      \"curve\": " << json_string(to_string(m.metrics.kind)) << ",\n      \"elastic_limit_method\": "
+      << json_string(m.metrics.elastic_limit_method);
+    for (const auto &v : metric_table(m.metrics))
+      j << ",\n      " << json_string(v.key) << ": " << format_number(v.value);
+    j << ",\n      \"notes\": [";
+    for (std::size_t n = 0; n < m.metrics.notes.size(); ++n)
+      j << (n ? ", " : "") << json_string(m.metrics.notes[n]);
+    j << "]\n    }";
+  }
+  j << "\n  },\n  \"differences\": {";
+  for (std::size_t k = 1; k < in.metrics.size(); ++k) {
+    const auto a = metric_table(in.metrics[k].metrics), ref = metric_table(in.metrics[0].metrics);
+    j << (k > 1 ? "," : "") << "\n    " << json_string(difference_label(in, k)) << ": {";
+    for (std::size_t r = 0; r < a.size(); ++r)
+      j << (r ? "," : "") << "\n      " << json_string(a[r].key) << ": " << format_number(difference(a[r], ref[r]));
+    j << "\n    }";
+  }
+  j << "\n  }";
+  if (in.verdict) {
+    const RrVerdict &v = *in.verdict;
+    const OnsetDisplay p = display(v.predicted);
+    j << ",\n  \"rudnicki_rice\": {\n    \"summary\": " << json_string(v.summary)
+      << ",\n    \"predicted\": {\"source\": " << json_string(v.predicted.source)
+      << ", \"found\": " << (v.predicted.found ? "true" : "false") << ", \"onset_strain_pct\": " << format_number(p.strain_pct)
+      << ", \"angle_deg\": " << format_number(p.angle_deg) << "},\n    \"rows\": [";
+    for (std::size_t k = 0; k < v.rows.size(); ++k) {
+      const auto &r = v.rows[k];
+      const OnsetDisplay d = display(r.onset);
+      j << (k ? "," : "") << "\n      {\"source\": " << json_string(r.onset.source)
+        << ", \"found\": " << (r.onset.found ? "true" : "false") << ", \"onset_strain_pct\": " << format_number(d.strain_pct)
+        << ", \"angle_deg\": " << format_number(d.angle_deg)
+        << ", \"strain_difference_pct\": " << format_number(r.comparable ? r.strain_difference * 100 : NAN)
+        << ", \"strain_relative_pct\": " << format_number(r.comparable ? r.strain_relative * 100 : NAN)
+        << ", \"angle_difference_deg\": " << format_number(r.comparable ? r.angle_difference_deg : NAN)
+        << ", \"verdict\": " << json_string(r.verdict) << "}";
+    }
+    j << "\n    ]\n  }";
+  }
+  j << ",\n  \"calibrated_parameters\": {";
+  for (std::size_t k = 0; k < in.calibrated_parameters.size(); ++k)
+    j << (k ? "," : "") << "\n    " << json_string(in.calibrated_parameters[k].first) << ": "
+      << json_string(in.calibrated_parameters[k].second);
+  j << (in.calibrated_parameters.empty() ? "}" : "\n  }") << "\n}\n";
+  return j.str();
+}
+
+ReportOutcome write_report(const ReportInput &in, const fs::path &dir, const ReportOptions &options)
+{
+  static std::atomic<int> counter{0};
+  const fs::path target = fs::absolute(dir);
+  fs::create_directories(target.parent_path());
+  const std::string stamp = std::to_string(::getpid()) + "." + std::to_string(counter++);
+  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp." + stamp);
+  ReportOutcome out;
+  out.dir = target;
+  try {
+    fs::remove_all(tmp);
+    fs::create_directories(tmp);
+    std::string script;
+    const std::vector<std::string> pngs = write_plot_inputs(in, tmp, script);
+    write_text(tmp / "report.gp", script);
+    if (pngs.empty()) {
+      out.message = "nothing to plot";
+    } else if (!gnuplot_available(options.gnuplot)) {
+      out.message = "gnuplot not found ('" + options.gnuplot +
+                    "'; Debian package gnuplot-nox): plots skipped, tables and metrics.json written; "
+                    "run `gnuplot report.gp` in the report folder once it is installed";
+      std::cerr << "geocomp report: " << out.message << "\n";
+    } else {
+      const std::string cmd =
+        "cd " + shell_quote(tmp.string()) + " && " + shell_quote(options.gnuplot) + " report.gp > gnuplot.log 2>&1";
+      const int rc = std::system(cmd.c_str());
+      for (const auto &p : pngs)
+        if (fs::exists(tmp / p) && fs::file_size(tmp / p) > 0)
+          out.plots.push_back(p);
+      out.plots_made = rc == 0 && out.plots.size() == pngs.size();
+      if (!out.plots_made) {
+        out.message = "gnuplot failed (exit " + std::to_string(rc) + "); see gnuplot.log";
+        std::cerr << "geocomp report: " << out.message << "\n";
+      }
+    }
+    write_text(tmp / "metrics.json", metrics_json(in));
+    write_text(tmp / "index.html", build_html(in, out.plots, out.message));
+    // Swap into place: the old folder (if any) is moved aside first, removed after.
+    fs::path old;
+    if (fs::exists(target)) {
+      old = target.parent_path() / ("." + target.filename().string() + ".old." + stamp);
+      fs::rename(target, old);
+    }
+    fs::rename(tmp, target);
+    if (!old.empty())
+      fs::remove_all(old);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+  return out;
+}
+
+} // namespace geocomp::compare

@@ -1,0 +1,71 @@
+#pragma once
+// The comparison report: a self-contained folder that reads like S0's figure set with the
+// continuum beside it.
+//
+//   index.html      overlay plots, metrics table with differences, Rudnicki-Rice verdict,
+//                   calibrated parameters, the definitions used
+//   metrics.json    the same numbers, machine-readable
+//   *.png           plots made by gnuplot from a generated report.gp (kept, with data/)
+//
+// Every number in the HTML tables is printed by format_number() from the same double as
+// in metrics.json, and each numeric cell names its JSON location (data-path, an RFC 6901
+// pointer without the leading slash), so a test can check that they are equal. The folder
+// is built under a temporary name beside `dir` and renamed into place when complete.
+// Units in the report: MPa, %, degrees; the lateral-pressure curve is compression positive.
+#include "compare/Localization.h"
+#include "compare/Metrics.h"
+#include "compare/Verdict.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace geocomp::compare {
+
+struct NamedResponse {
+  std::string label; ///< "DEM", "continuum", ...
+  Response response;
+};
+
+struct NamedMetrics {
+  std::string label;
+  MetricSet metrics;
+};
+
+struct ReportInput {
+  std::string title = "geocomp: DEM and continuum compared";
+  std::string case_name;
+  CurveKind kind = CurveKind::Auto; ///< of the overlays; Auto: the first metric set's kind
+  int stage = -1;                   ///< analysed stage (-1: last)
+  std::vector<NamedResponse> responses;
+  std::vector<NamedMetrics> metrics; ///< the first is the reference of the differences
+  std::optional<RrVerdict> verdict;
+  std::vector<DisplacementMap> maps; ///< mid-section maps (S0 Fig. 4 style)
+  std::vector<std::pair<std::string, std::string>> calibrated_parameters;
+  std::vector<std::string> notes;
+};
+
+struct ReportOptions {
+  std::string gnuplot = "gnuplot"; ///< program name or path; empty: no plots
+};
+
+struct ReportOutcome {
+  std::filesystem::path dir;
+  std::vector<std::string> plots; ///< PNG file names written
+  bool plots_made = false;
+  std::string message;            ///< why plots are missing, if they are
+};
+
+/// Writes the report folder `dir` atomically (replacing an existing one).
+ReportOutcome write_report(const ReportInput &input, const std::filesystem::path &dir,
+                           const ReportOptions &options = {});
+
+/// The one number format of the report: "%.6g", "null" for NaN or infinity.
+std::string format_number(double value);
+
+/// metrics.json text (also used by write_report).
+std::string metrics_json(const ReportInput &input);
+
+} // namespace geocomp::compare

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The README's test command: installs what is missing (Debian packages), builds, and runs
+# every test: the GoogleTest suites through ctest, the same unit tests under ASan+UBSan,
+# and a libFuzzer run over the case-file parser.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+start=$(date +%s)
+echo "== build (Release)"
+scripts/build.sh
+echo "== ctest"
+ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900
+echo "== sanitizers (ASan + UBSan) on the engine-independent unit tests"
+scripts/sanitize.sh
+echo "== fuzzing the case-file parser (${GEOCOMP_FUZZ_SECONDS:-60} s)"
+scripts/fuzz-case-parser.sh "${GEOCOMP_FUZZ_SECONDS:-60}"
+echo "== all tests passed in $(( $(date +%s) - start )) s"

@@ -1,0 +1,132 @@
+// Every malformed case file in tests/bad_cases/ is refused by every command that reads a
+// case: one message naming the file and the parameter, exit code 2, and nothing written.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+fs::path source_dir() { return fs::path(std::getenv("GEOCOMP_SOURCE_DIR") ? std::getenv("GEOCOMP_SOURCE_DIR") : "."); }
+fs::path geocomp_exe() { return fs::path(GEOCOMP_EXE); }
+
+struct Result {
+  int code = -1;
+  std::string err;
+};
+
+/// Runs geocomp in `cwd` with the arguments; captures stderr.
+Result run(const fs::path &cwd, const std::string &args)
+{
+  const fs::path err_file = cwd / ".stderr";
+  const std::string cmd = "cd '" + cwd.string() + "' && '" + geocomp_exe().string() + "' " + args + " >/dev/null 2>'" +
+                          err_file.string() + "'";
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(err_file);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.err = ss.str();
+  fs::remove(err_file);
+  return r;
+}
+
+/// Subcommands that take a case file, read from `geocomp --help`.
+std::vector<std::string> case_commands()
+{
+  std::vector<std::string> out;
+  FILE *p = popen(("'" + geocomp_exe().string() + "' --help").c_str(), "r");
+  std::array<char, 512> buf{};
+  while (p && fgets(buf.data(), buf.size(), p)) {
+    std::istringstream line(buf.data());
+    std::string name;
+    line >> name;
+    for (const char *c : {"check", "dem", "continuum", "material-point", "pair", "pack", "calibrate"})
+      if (name == c)
+        out.push_back(name);
+  }
+  if (p)
+    pclose(p);
+  return out;
+}
+
+std::map<std::string, std::string> expected()
+{
+  std::map<std::string, std::string> m;
+  std::ifstream in(source_dir() / "tests/bad_cases/expected.txt");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#')
+      continue;
+    const auto tab = line.find('\t');
+    m[line.substr(0, tab)] = line.substr(tab + 1);
+  }
+  return m;
+}
+} // namespace
+
+TEST(BadCases, AtLeastThirtyAndEveryOneListed)
+{
+  const auto exp = expected();
+  int n = 0;
+  for (const auto &e : fs::directory_iterator(source_dir() / "tests/bad_cases")) {
+    if (e.path().filename() == "expected.txt")
+      continue;
+    ++n;
+    EXPECT_TRUE(exp.count(e.path().filename().string())) << e.path() << " has no line in expected.txt";
+  }
+  EXPECT_GE(n, 30);
+}
+
+TEST(BadCases, EachIsRefusedWithFileParameterExitTwoAndNoOutput)
+{
+  const auto commands = case_commands();
+  ASSERT_FALSE(commands.empty());
+  for (const auto &[file, parameter] : expected()) {
+    const fs::path path = fs::absolute(source_dir() / "tests/bad_cases" / file);
+    for (const auto &command : commands) {
+      const fs::path cwd = fs::temp_directory_path() / ("geocomp-bad-" + std::to_string(::getpid()));
+      fs::remove_all(cwd);
+      fs::create_directories(cwd);
+      const Result r = run(cwd, command + " '" + path.string() + "'");
+      EXPECT_EQ(r.code, 2) << command << " " << file << ": " << r.err;
+      EXPECT_NE(r.err.find(path.string()), std::string::npos) << command << " " << file << ": " << r.err;
+      EXPECT_NE(r.err.find("parameter '" + parameter), std::string::npos)
+        << command << " " << file << " should name '" << parameter << "': " << r.err;
+      // One message: a single line on stderr.
+      EXPECT_LE(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      std::size_t left = 0;
+      for ([[maybe_unused]] const auto &e : fs::recursive_directory_iterator(cwd))
+        ++left;
+      EXPECT_EQ(left, 0u) << command << " " << file << " left files behind";
+      fs::remove_all(cwd);
+    }
+  }
+}
+
+TEST(CommandLine, UnreadableCaseAndUnknownOptionsAreBadInput)
+{
+  const fs::path cwd = fs::temp_directory_path();
+  EXPECT_EQ(run(cwd, "check /nonexistent/case.prm").code, 2);
+  EXPECT_EQ(run(cwd, "check").code, 2);
+  EXPECT_EQ(run(cwd, "check --frobnicate x.prm").code, 2);
+  EXPECT_EQ(run(cwd, "no-such-command").code, 2);
+  EXPECT_EQ(run(cwd, "--version").code, 0);
+  EXPECT_EQ(run(cwd, "check --help").code, 0);
+}
+
+TEST(CommandLine, ShippedCasesPassCheck)
+{
+  for (const auto &e : fs::directory_iterator(source_dir() / "cases"))
+    if (e.path().extension() == ".prm" || e.path().extension() == ".json") {
+      const Result r = run(fs::temp_directory_path(), "check '" + fs::absolute(e.path()).string() + "'");
+      EXPECT_EQ(r.code, 0) << e.path() << ": " << r.err;
+    }
+}

@@ -1,0 +1,327 @@
+// The report folder: every number in the HTML tables is the one in metrics.json (parsed
+// with a strict little JSON reader), plots exist as PNGs when gnuplot is there, and the
+// folder appears whole (atomic) with or without gnuplot.
+#include "compare/Report.h"
+#include "Synthetic.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+using namespace geocomp;
+using namespace geocomp::compare;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Strict JSON reader; numbers keep their source text so equality is textual.
+struct Json {
+  enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
+  std::string text; ///< number text or string value
+  std::vector<Json> items;
+  std::map<std::string, Json> members;
+};
+
+class JsonReader {
+public:
+  explicit JsonReader(const std::string &s) : s_(s) {}
+  Json parse()
+  {
+    Json j = value();
+    ws();
+    if (i_ != s_.size())
+      throw std::runtime_error("trailing text at " + std::to_string(i_));
+    return j;
+  }
+
+private:
+  void ws()
+  {
+    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_])))
+      ++i_;
+  }
+  void expect(char c)
+  {
+    ws();
+    if (i_ >= s_.size() || s_[i_] != c)
+      throw std::runtime_error(std::string("expected '") + c + "' at " + std::to_string(i_));
+    ++i_;
+  }
+  std::string string()
+  {
+    expect('"');
+    std::string out;
+    while (i_ < s_.size() && s_[i_] != '"') {
+      if (s_[i_] == '\\') {
+        ++i_;
+        const char c = s_.at(i_);
+        if (c == 'u') {
+          out += static_cast<char>(std::stoi(s_.substr(i_ + 1, 4), nullptr, 16));
+          i_ += 4;
+        } else
+          out += c == 'n' ? '\n' : c;
+      } else {
+        if (static_cast<unsigned char>(s_[i_]) < 0x20)
+          throw std::runtime_error("control character in string");
+        out += s_[i_];
+      }
+      ++i_;
+    }
+    expect('"');
+    return out;
+  }
+  Json value()
+  {
+    ws();
+    Json j;
+    if (i_ >= s_.size())
+      throw std::runtime_error("unexpected end");
+    const char c = s_[i_];
+    if (c == '{') {
+      j.kind = Json::Object;
+      ++i_;
+      ws();
+      if (s_[i_] == '}') {
+        ++i_;
+        return j;
+      }
+      for (;;) {
+        const std::string k = string();
+        expect(':');
+        if (!j.members.emplace(k, value()).second)
+          throw std::runtime_error("duplicate key " + k);
+        ws();
+        if (s_[i_] == ',') {
+          ++i_;
+          continue;
+        }
+        expect('}');
+        return j;
+      }
+    }
+    if (c == '[') {
+      j.kind = Json::Array;
+      ++i_;
+      ws();
+      if (s_[i_] == ']') {
+        ++i_;
+        return j;
+      }
+      for (;;) {
+        j.items.push_back(value());
+        ws();
+        if (s_[i_] == ',') {
+          ++i_;
+          continue;
+        }
+        expect(']');
+        return j;
+      }
+    }
+    if (c == '"') {
+      j.kind = Json::String;
+      j.text = string();
+      return j;
+    }
+    for (const char *lit : {"null", "true", "false"})
+      if (s_.compare(i_, std::strlen(lit), lit) == 0) {
+        i_ += std::strlen(lit);
+        j.kind = lit[0] == 'n' ? Json::Null : Json::Bool;
+        j.text = lit;
+        return j;
+      }
+    static const std::regex number(R"(^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?)");
+    std::smatch m;
+    const std::string rest = s_.substr(i_, 40);
+    if (!std::regex_search(rest, m, number))
+      throw std::runtime_error("bad value at " + std::to_string(i_));
+    j.kind = Json::Number;
+    j.text = m.str();
+    i_ += j.text.size();
+    return j;
+  }
+  const std::string &s_;
+  std::size_t i_ = 0;
+};
+
+const Json *lookup(const Json &root, const std::string &path)
+{
+  const Json *j = &root;
+  std::stringstream ss(path);
+  std::string token;
+  while (std::getline(ss, token, '/')) {
+    std::string t; // RFC 6901 unescape
+    for (std::size_t i = 0; i < token.size(); ++i)
+      if (token[i] == '~' && i + 1 < token.size()) {
+        t += token[i + 1] == '1' ? '/' : '~';
+        ++i;
+      } else
+        t += token[i];
+    if (j->kind == Json::Object) {
+      auto it = j->members.find(t);
+      if (it == j->members.end())
+        return nullptr;
+      j = &it->second;
+    } else if (j->kind == Json::Array) {
+      const std::size_t k = std::stoul(t);
+      if (k >= j->items.size())
+        return nullptr;
+      j = &j->items[k];
+    } else
+      return nullptr;
+  }
+  return j;
+}
+
+std::string read(const fs::path &p)
+{
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+/// Two responses (a noisy "DEM" with branches, a smooth "continuum" with a softer
+/// backbone), their metrics, a verdict, a map and calibrated parameters.
+ReportInput sample_input()
+{
+  using geocomp::compare::testing::Backbone;
+  using geocomp::compare::testing::shear_response;
+  Backbone dem, fe;
+  fe.tau_p = 4.6e6;
+  fe.H = 60e6;
+  ReportInput in;
+  in.case_name = "cases/demo.prm";
+  in.responses.push_back({"DEM", shear_response(dem, 2e-4, 20e3, {0.004, 0.012, 0.02, 0.03}, dem.E)});
+  in.responses.push_back({"continuum/FE", shear_response(fe, 2e-4, 0.0, {0.004, 0.012, 0.02}, fe.E)});
+  MetricOptions o;
+  o.kind = CurveKind::ShearIsochoric;
+  for (const auto &r : in.responses)
+    in.metrics.push_back({r.label, compute_metrics(r.response, o)});
+  in.verdict = rudnicki_rice_verdict({"Rudnicki-Rice", true, 0.020, 56.48, true, ""},
+                                     {{"FE acoustic tensor", true, 0.0215, 55.2, true, ""},
+                                      {"DEM", true, 0.031, 61.0, true, ""}});
+  DisplacementMap map;
+  map.title = "DEM u_x at the peak, y = L/2";
+  map.component = "u_x";
+  for (int i = 0; i < 30; ++i)
+    for (int k = 0; k < 30; ++k) {
+      map.x.push_back(i / 29.0);
+      map.z.push_back(k / 29.0);
+      map.u.push_back(1e-3 * std::tanh((i / 29.0 * 0.5 + k / 29.0 * 0.866 - 0.68) / 0.05));
+    }
+  in.maps.push_back(map);
+  in.calibrated_parameters = {{"E", "512 MPa"}, {"phi", "38.2 deg"}};
+  return in;
+}
+
+fs::path scratch(const std::string &name)
+{
+  const fs::path base =
+    fs::temp_directory_path() / ("geocomp_compare_test_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  fs::create_directories(base);
+  return base / name;
+}
+
+/// Checks every data-path cell of the HTML against metrics.json; returns the cell count.
+int check_html_against_json(const fs::path &dir)
+{
+  const std::string html = read(dir / "index.html");
+  const std::string json = read(dir / "metrics.json");
+  Json root;
+  EXPECT_NO_THROW(root = JsonReader(json).parse()) << json;
+  static const std::regex cell(R"re(<td class="num" data-path="([^"]*)">([^<]*)</td>)re");
+  int cells = 0;
+  for (std::sregex_iterator it(html.begin(), html.end(), cell), end; it != end; ++it) {
+    std::string path = (*it)[1];
+    for (std::size_t p; (p = path.find("&quot;")) != std::string::npos;)
+      path.replace(p, 6, "\"");
+    for (std::size_t p; (p = path.find("&amp;")) != std::string::npos;)
+      path.replace(p, 5, "&");
+    const std::string shown = (*it)[2];
+    const Json *j = lookup(root, path);
+    ++cells;
+    if (!j) {
+      ADD_FAILURE() << "no JSON value at " << path;
+      continue;
+    }
+    if (shown == "&mdash;")
+      EXPECT_EQ(j->kind, Json::Null) << path;
+    else {
+      EXPECT_EQ(j->kind, Json::Number) << path;
+      EXPECT_EQ(j->text, shown) << path;
+    }
+  }
+  return cells;
+}
+} // namespace
+
+TEST(Report, HtmlNumbersEqualMetricsJsonAndPlotsArePngs)
+{
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "gnuplot not installed";
+  const ReportInput in = sample_input();
+  const fs::path dir = scratch("report");
+  const ReportOutcome out = write_report(in, dir);
+  EXPECT_TRUE(out.plots_made) << out.message;
+  EXPECT_EQ(out.plots.size(), 4u); // stress-strain, volumetric, stress path, one map
+  for (const auto &p : out.plots) {
+    const std::string bytes = read(dir / p);
+    ASSERT_GT(bytes.size(), 1000u) << p;
+    EXPECT_EQ(bytes.substr(1, 3), "PNG") << p;
+    EXPECT_NE(read(dir / "index.html").find("src=\"" + p + "\""), std::string::npos);
+  }
+  // 11 metrics x (2 labels + 1 difference) + predicted (2) + 2 rows x 5.
+  EXPECT_EQ(check_html_against_json(dir), 11 * 3 + 2 + 2 * 5);
+  // Spot-check that the JSON holds the metric itself, not just a consistent copy.
+  const Json root = JsonReader(read(dir / "metrics.json")).parse();
+  const Json *peak = lookup(root, "metrics/continuum~1FE/peak_stress_MPa");
+  ASSERT_NE(peak, nullptr);
+  EXPECT_EQ(peak->text, format_number(in.metrics[1].metrics.peak_stress * 1e-6));
+  EXPECT_NEAR(std::stod(peak->text), 4.6, 0.02);
+  const Json *diff = lookup(root, "differences/continuum~1FE - DEM/peak_stress_MPa");
+  ASSERT_NE(diff, nullptr);
+  EXPECT_NEAR(std::stod(diff->text), -0.4, 0.05);
+  EXPECT_EQ(lookup(root, "calibrated_parameters/phi")->text, "38.2 deg");
+  if (!std::getenv("GEOCOMP_TEST_KEEP")) // set it to look at the report
+    fs::remove_all(dir.parent_path());
+  else
+    std::cout << "report kept in " << dir << "\n";
+}
+
+// Without gnuplot: a clear message, still the tables and metrics.json; rewriting the same
+// folder replaces it whole and leaves no temporary folders behind.
+TEST(Report, WithoutGnuplotTablesAreStillWrittenAtomically)
+{
+  ReportInput in = sample_input();
+  in.maps.clear();
+  const fs::path dir = scratch("nogp");
+  ReportOptions o;
+  o.gnuplot = "/nonexistent/gnuplot";
+  const ReportOutcome out = write_report(in, dir, o);
+  EXPECT_FALSE(out.plots_made);
+  EXPECT_TRUE(out.plots.empty());
+  EXPECT_NE(out.message.find("gnuplot not found"), std::string::npos);
+  EXPECT_NE(read(dir / "index.html").find("gnuplot not found"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "report.gp"));
+  EXPECT_EQ(check_html_against_json(dir), 11 * 3 + 2 + 2 * 5);
+
+  in.metrics.pop_back();
+  in.title = "second";
+  write_report(in, dir, o);
+  EXPECT_NE(read(dir / "index.html").find("<h1>second</h1>"), std::string::npos);
+  EXPECT_EQ(check_html_against_json(dir), 11 + 2 + 2 * 5);
+  int entries = 0;
+  for (const auto &e : fs::directory_iterator(dir.parent_path())) {
+    (void)e;
+    ++entries;
+  }
+  EXPECT_EQ(entries, 1); // only the report folder itself
+  fs::remove_all(dir.parent_path());
+}
