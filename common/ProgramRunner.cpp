@@ -145,7 +145,7 @@ void ProgramRunner::run_stage(int index)
       reason = "max duration";
     record(s, index, 0, reason.empty() ? fraction : 1.0);
 
-    const ResponseSample &now = response_.samples.back();
+    const ResponseSample now = response_.samples.back(); // a copy: branches append samples
     for (std::size_t k = 0; k < stage.unload_at.size(); ++k) {
       if (fired[k])
         continue;

@@ -6,14 +6,15 @@ cd "$(dirname "$0")/.."
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DGEOCOMP_SANITIZE=ON "${launcher[@]}" >/dev/null
+cmake --build build-asan --target help > build-asan/targets.txt
 targets=()
-for t in common_tests dem_tests continuum_model_tests compare_tests; do
-  cmake --build build-asan --target help | grep -q "^\.\.\. $t\$\|: $t\$\| $t$" && targets+=("$t")
+for t in common_tests dem_tests dem_specimen_tests continuum_model_tests compare_tests; do
+  grep -qE "(^|[ .:])$t(:|$)" build-asan/targets.txt && targets+=("$t")
 done
 cmake --build build-asan -j "$(nproc)" --target "${targets[@]}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 for t in "${targets[@]}"; do
-  exe=$(find build-asan -type f -name "$t" -perm -u+x | head -1)
+  exe=$(find "$PWD/build-asan" -type f -name "$t" -perm -u+x | head -1)
   echo "-- $t (sanitized)"
-  (cd build-asan && GEOCOMP_SOURCE_DIR="$PWD/.." "$exe" --gtest_brief=1)
+  GEOCOMP_SOURCE_DIR="$PWD" "$exe" --gtest_brief=1
 done
