@@ -1,0 +1,69 @@
+// @sect3{The ContactLists struct: per-contact slots and the gather index}
+//
+// Why it exists: deterministic, thread-count independent force accumulation
+// (DEM-NOTES section 5, option 1). Pass A loops over contact slots in parallel; each
+// contact is computed once and writes only its own slot (force on j, lever term
+// $n\times F_t$, overlap, tangential history). Pass B loops over particles and sums the
+// incident slots in ascending slot order through a CSR index. The sum order depends
+// only on the lists, never on the threads, so any thread count gives the same bits.
+//
+// Torques from a slot: $T_k = -(R_k - \delta/2)\,(n\times F_t)$ for both bodies
+// (DEM-NOTES section 1), which is why a slot stores $n\times F_t$ and $\delta$, not
+// two torques. A slot whose bodies are apart holds zeros.
+//
+// Pairs are stored with id_i < id_j and the slot vectors act on j. Wall slots are sorted
+// by particle index, so each particle's wall contacts are one contiguous range.
+#pragma once
+
+#include "dem/Types.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace geocomp::dem {
+
+struct PairSlot
+{
+  Index i = 0, j = 0;        ///< storage indices; id[i] < id[j]
+  double overlap = 0.0;      ///< delta at the last evaluation (0: apart)
+  Vec3 shear = Vec3::Zero(); ///< tangential history (xi, or the Mindlin spring force)
+  Vec3 force = Vec3::Zero(); ///< total contact force on j
+  Vec3 lever = Vec3::Zero(); ///< n x F_t
+};
+
+struct WallSlot
+{
+  Index wall = 0, particle = 0;
+  double overlap = 0.0;
+  Vec3 shear = Vec3::Zero();
+  Vec3 force = Vec3::Zero(); ///< on the particle
+  Vec3 lever = Vec3::Zero();
+};
+
+/// History carried across a rebuild (and exported for checkpoints).
+struct HistoryEntry
+{
+  std::uint64_t key = 0;
+  double overlap = 0.0;
+  Vec3 shear = Vec3::Zero();
+  bool operator<(const HistoryEntry& o) const { return key < o.key; }
+};
+
+struct ContactLists
+{
+  std::vector<PairSlot> pairs;
+  /// Incident slots of particle p: incident[incident_offset[p] .. incident_offset[p+1]),
+  /// each entry (slot << 1) | role, role 1 when p is body j of the slot.
+  std::vector<std::uint32_t> incident_offset, incident;
+  std::vector<WallSlot> walls;
+  /// Wall slots of particle p: walls[wall_offset[p] .. wall_offset[p+1]).
+  std::vector<std::uint32_t> wall_offset;
+
+  std::size_t memory_bytes() const
+  {
+    return pairs.capacity() * sizeof(PairSlot) + walls.capacity() * sizeof(WallSlot) +
+           (incident_offset.capacity() + incident.capacity() + wall_offset.capacity()) * sizeof(std::uint32_t);
+  }
+};
+
+}  // namespace geocomp::dem

@@ -1,0 +1,564 @@
+#include "dem/DemSystem.h"
+
+#include "dem/ContactKinematics.h"
+#include "dem/TimeStep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace geocomp::dem {
+
+namespace {
+/// Fixed block size of every parallel reduction: block sums do not depend on the
+/// number of threads, and are added in block order (DEM-NOTES section 5).
+constexpr std::size_t kBlock = 2048;
+
+std::size_t n_blocks(std::size_t n) { return (n + kBlock - 1) / kBlock; }
+
+/// q <- exp(dt omega / 2) (x) q with the exact axis-angle quaternion; for the small
+/// angles of DEM steps (theta < 1e-2) a 5th-order series equals sin/cos to round-off.
+inline void rotate_orientation(Quat& q, const Vec3& omega, double dt)
+{
+  const Vec3 h = (0.5 * dt) * omega;
+  const double t2 = h.squaredNorm();
+  double c, s;
+  if (t2 < 1e-4) {
+    c = 1.0 - t2 * (0.5 - t2 * (1.0 / 24.0));
+    s = 1.0 - t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0));
+  } else {
+    const double t = std::sqrt(t2);
+    c = std::cos(t);
+    s = std::sin(t) / t;
+  }
+  const Quat dq(c, s * h.x(), s * h.y(), s * h.z());
+  q = dq * q;
+}
+
+/// Cundall local damping of one load vector: F_k - lambda |F_k| sign(v_k); returns the
+/// power dissipated, sum_k lambda |F_k| |v_k|.
+inline double local_damping(Vec3& f, const Vec3& v, double lambda)
+{
+  double power = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double s = (v[a] > 0.0) ? 1.0 : (v[a] < 0.0 ? -1.0 : 0.0);
+    power += lambda * std::abs(f[a]) * std::abs(v[a]);
+    f[a] -= lambda * std::abs(f[a]) * s;
+  }
+  return power;
+}
+}  // namespace
+
+DemSystem::DemSystem() : model_(LinearSpringDashpot(LinearNormal::with_stiffness(1.0, 1.0), LinearTangential())) {}
+
+// @sect4{Particles and walls}
+
+ParticleId DemSystem::add_sphere(const Vec3& x, double radius, double density, const Vec3& v, const Vec3& omega)
+{
+  if (!(density > 0.0)) throw std::invalid_argument("DemSystem::add_sphere: density must be positive");
+  if (!x.allFinite()) throw std::invalid_argument("DemSystem::add_sphere: non-finite position");
+  const ParticleId id = ParticleId(index_of_.size());
+  const double mass = 4.0 / 3.0 * M_PI * radius * radius * radius * density;
+  const Index k = store_.add_sphere(id, x, radius, mass);
+  store_.v[k] = v;
+  store_.omega[k] = omega;
+  index_of_.push_back(k);
+  rebuild_requested_ = true;
+  invalidate();
+  return id;
+}
+
+void DemSystem::set_position(ParticleId id, const Vec3& x)
+{
+  store_.x.at(index_of_.at(id)) = x;
+  rebuild_requested_ = true;
+  invalidate();
+}
+
+void DemSystem::set_velocity(ParticleId id, const Vec3& v)
+{
+  store_.v.at(index_of_.at(id)) = v;
+  invalidate();
+}
+
+void DemSystem::set_angular_velocity(ParticleId id, const Vec3& w)
+{
+  store_.omega.at(index_of_.at(id)) = w;
+  invalidate();
+}
+
+void DemSystem::set_fixed(ParticleId id, bool fixed)
+{
+  store_.set_fixed(index_of_.at(id), fixed);
+  rebuild_requested_ = true;  // pairs of two fixed particles are not listed
+  invalidate();
+}
+
+std::size_t DemSystem::add_wall(const PlaneWall& w)
+{
+  PlaneWall c = w;
+  const double len = c.normal.norm();
+  if (!(len > 0.0)) throw std::invalid_argument("DemSystem::add_wall: zero normal");
+  if (!(c.mu >= 0.0)) throw std::invalid_argument("DemSystem::add_wall: friction must be >= 0");
+  c.normal /= len;
+  walls_.push_back(c);
+  rebuild_requested_ = true;
+  invalidate();
+  return walls_.size() - 1;
+}
+
+std::size_t DemSystem::add_box(const Vec3& lo, const Vec3& hi, double mu_p)
+{
+  if (!((hi - lo).minCoeff() > 0.0)) throw std::invalid_argument("DemSystem::add_box: empty box");
+  const std::size_t first = walls_.size();
+  for (int f = 0; f < 6; ++f) add_wall(box_face(lo, hi, f, mu_p));
+  return first;
+}
+
+void DemSystem::set_contact_model(const ContactModel& m)
+{
+  model_ = m;
+  invalidate();
+}
+
+void DemSystem::set_friction(double mu)
+{
+  if (!(mu >= 0.0)) throw std::invalid_argument("DemSystem::set_friction: mu must be >= 0");
+  mu_ = mu;
+  invalidate();
+}
+
+void DemSystem::set_time_step(double dt)
+{
+  if (!(dt > 0.0)) throw std::invalid_argument("DemSystem::set_time_step: dt must be positive");
+  dt_ = dt;
+}
+
+void DemSystem::set_num_threads(int n) { threads_ = std::max(1, n); }
+
+double DemSystem::critical_time_step() const
+{
+  double m_min = std::numeric_limits<double>::infinity(), r_min = m_min;
+  Index k_min = 0;
+  for (Index k = 0; k < store_.size(); ++k) {
+    if (store_.inv_mass[k] == 0.0) continue;
+    if (store_.mass[k] < m_min) { m_min = store_.mass[k]; k_min = k; }
+    r_min = std::min(r_min, store_.radius[k]);
+  }
+  if (!std::isfinite(m_min)) throw std::logic_error("DemSystem::critical_time_step: no dynamic particles");
+  return std::visit(
+    [&](const auto& law) -> double {
+      using L = std::decay_t<decltype(law)>;
+      if constexpr (std::is_same_v<L, LinearSpringDashpot>) {
+        // Wall contact (m* = m, R* = R) is the stiffest for S0's stiffness formula.
+        const double kn = std::max(law.normal().stiffness(0.5 * m_min, 0.5 * r_min),
+                                   law.normal().stiffness(m_min, r_min));
+        const double kt = law.tangential().stiffness_for(kn);
+        return spring_time_scale(m_min, std::max(kn, 3.5 * kt));
+      } else {
+        const auto& p = law.normal().parameters();
+        const double R = store_.radius[k_min];
+        const double rho = store_.mass[k_min] / (4.0 / 3.0 * M_PI * R * R * R);
+        const double G = p.youngs_modulus / (2.0 * (1.0 + p.poisson_ratio));
+        return rayleigh_time_step(r_min, rho, G, p.poisson_ratio);  // S4 Rayleigh step
+      }
+    },
+    model_);
+}
+
+// @sect4{Time stepping}
+
+void DemSystem::refresh_index()
+{
+  for (Index k = 0; k < store_.size(); ++k) index_of_[store_.id[k]] = k;
+}
+
+void DemSystem::rebuild()
+{
+  if (search_.rebuild(store_, walls_, lists_, threads_)) refresh_index();
+  rebuild_requested_ = false;
+}
+
+void DemSystem::prepare()
+{
+  if (search_.skin() <= 0.0) {
+    double r_max = 0.0;
+    for (double r : store_.radius) r_max = std::max(r_max, r);
+    search_.set_skin(r_max > 0.0 ? 0.2 * r_max : 1.0);  // 0.1 of the largest diameter
+  }
+  if (rebuild_requested_) rebuild();
+  if (!ready_) {
+    compute_forces(0.0);  // forces at the current state, histories not advanced
+    ready_ = true;
+  }
+}
+
+double DemSystem::kick(double dt)
+{
+  const std::size_t n = store_.size();
+  const std::size_t nb = n_blocks(n);
+  const double lambda = local_damping_;
+  block_losses_.assign(nb, 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (std::int64_t b = 0; b < std::int64_t(nb); ++b) {
+    double loss = 0.0;
+    const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
+    for (std::size_t p = std::size_t(b) * kBlock; p < end; ++p) {
+      Vec3 f = store_.force[p], t = store_.torque[p];
+      if (lambda > 0.0 && store_.inv_mass[p] != 0.0)
+        loss += 0.5 * dt * (local_damping(f, store_.v[p], lambda) + local_damping(t, store_.omega[p], lambda));
+      store_.v[p] += (0.5 * dt * store_.inv_mass[p]) * f;
+      store_.omega[p] += (0.5 * dt * store_.inv_inertia[p]) * t;
+    }
+    block_losses_[b] = loss;
+  }
+  double loss = 0.0;
+  for (double l : block_losses_) loss += l;
+  return loss;
+}
+
+double DemSystem::kick_drift(double dt)
+{
+  const std::size_t n = store_.size();
+  const std::size_t nb = n_blocks(n);
+  const double lambda = local_damping_;
+  const std::vector<Vec3>& x_ref = search_.reference_positions();
+  block_losses_.assign(2 * nb, 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (std::int64_t b = 0; b < std::int64_t(nb); ++b) {
+    double loss = 0.0, max_d2 = 0.0;
+    const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
+    for (std::size_t p = std::size_t(b) * kBlock; p < end; ++p) {
+      Vec3 f = store_.force[p], t = store_.torque[p];
+      if (lambda > 0.0 && store_.inv_mass[p] != 0.0)
+        loss += 0.5 * dt * (local_damping(f, store_.v[p], lambda) + local_damping(t, store_.omega[p], lambda));
+      const Vec3 v = store_.v[p] + (0.5 * dt * store_.inv_mass[p]) * f;
+      const Vec3 w = store_.omega[p] + (0.5 * dt * store_.inv_inertia[p]) * t;
+      store_.v[p] = v;
+      store_.omega[p] = w;
+      const Vec3 x = store_.x[p] + dt * v;
+      store_.x[p] = x;
+      rotate_orientation(store_.orientation[p], w, dt);
+      max_d2 = std::max(max_d2, (x - x_ref[p]).squaredNorm());
+    }
+    block_losses_[2 * b] = loss;
+    block_losses_[2 * b + 1] = max_d2;
+  }
+  double loss = 0.0, max_d2 = 0.0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    loss += block_losses_[2 * b];
+    max_d2 = std::max(max_d2, block_losses_[2 * b + 1]);
+  }
+  losses_.dissipated_local += loss;
+  return max_d2;
+}
+
+void DemSystem::step()
+{
+  if (!(dt_ > 0.0)) throw std::logic_error("DemSystem::step: time step not set");
+  prepare();
+  wall_force_old_.resize(walls_.size());
+  for (std::size_t w = 0; w < walls_.size(); ++w) wall_force_old_[w] = walls_[w].force;
+
+  const double max_d2 = kick_drift(dt_);
+  for (PlaneWall& w : walls_) w.point += dt_ * w.velocity;
+  if (rebuild_requested_ || search_.needs_rebuild(max_d2, walls_)) rebuild();
+  compute_forces(dt_);
+  losses_.dissipated_local += kick(dt_);
+
+  for (std::size_t k = 0; k < walls_.size(); ++k) {
+    PlaneWall& w = walls_[k];
+    // The particles receive -F from the wall; trapezoidal rule over the step.
+    const double dw = -0.5 * (wall_force_old_[k] + w.force).dot(w.velocity) * dt_;
+    w.work += dw;
+    losses_.wall_work += dw;
+  }
+  time_ += dt_;
+  ++steps_;
+}
+
+void DemSystem::run(std::size_t n)
+{
+  for (std::size_t s = 0; s < n; ++s) step();
+}
+
+// @sect4{Contact forces: pass A per contact, pass B per particle}
+
+void DemSystem::compute_forces(double dt_history)
+{
+  std::visit(
+    [&](const auto& law) {
+      if (track_energy_) compute_forces_with<std::decay_t<decltype(law)>, true>(law, dt_history);
+      else compute_forces_with<std::decay_t<decltype(law)>, false>(law, dt_history);
+    },
+    model_);
+}
+
+template <class Law, bool Track>
+void DemSystem::compute_forces_with(const Law& law, double dt_h)
+{
+  const auto& x = store_.x;
+  const auto& v = store_.v;
+  const auto& w = store_.omega;
+  const auto& R = store_.radius;
+  const auto& im = store_.inv_mass;
+  auto& pairs = lists_.pairs;
+  auto& wslots = lists_.walls;
+  const std::size_t n = store_.size();
+  const std::size_t nbp = n_blocks(pairs.size());
+  const std::size_t nbw = n_blocks(wslots.size());
+  if constexpr (Track) block_losses_.assign(2 * (nbp + nbw), 0.0);
+  const double mu = mu_;
+
+#pragma omp parallel num_threads(threads_)
+  {
+    // Pass A: particle pairs.
+#pragma omp for schedule(static)
+    for (std::int64_t b = 0; b < std::int64_t(nbp); ++b) {
+      double damp = 0.0, fric = 0.0;
+      const std::size_t end = std::min(pairs.size(), std::size_t(b + 1) * kBlock);
+      for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
+        PairSlot& s = pairs[c];
+        const Index i = s.i, j = s.j;
+        const Vec3 d = x[j] - x[i];
+        const double r2 = d.squaredNorm();
+        const double rs = R[i] + R[j];
+        if (r2 >= rs * rs || r2 == 0.0) {
+          // Apart: the slot holds zeros (written only when it did not already).
+          if (s.overlap != 0.0 || s.shear.squaredNorm() != 0.0) {
+            s.overlap = 0.0;
+            s.shear.setZero();
+            s.force.setZero();
+            s.lever.setZero();
+          }
+          continue;
+        }
+        ContactKinematics k;
+        sphere_sphere_kinematics(k, d, std::sqrt(r2), R[i], R[j], v[i], v[j], w[i], w[j], im[i], im[j]);
+        k.overlap_old = s.overlap;
+        k.dt = dt_h;
+        k.mu = mu;
+        const ContactForce f = law.evaluate(k, s.shear);
+        s.force = f.normal * k.normal + f.tangential;
+        s.lever = k.normal.cross(f.tangential);
+        s.overlap = k.overlap;
+        if constexpr (Track) {
+          damp += f.damping_loss;
+          fric += f.friction_loss;
+        }
+      }
+      if constexpr (Track) {
+        block_losses_[2 * b] = damp;
+        block_losses_[2 * b + 1] = fric;
+      }
+    }
+    // Pass A: particle-wall contacts, through the same law.
+#pragma omp for schedule(static)
+    for (std::int64_t b = 0; b < std::int64_t(nbw); ++b) {
+      double damp = 0.0, fric = 0.0;
+      const std::size_t end = std::min(wslots.size(), std::size_t(b + 1) * kBlock);
+      for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
+        WallSlot& s = wslots[c];
+        const PlaneWall& wall = walls_[s.wall];
+        const Index p = s.particle;
+        const double h = wall.distance(x[p]);
+        if (h >= R[p]) {
+          s.overlap = 0.0;
+          s.shear.setZero();
+          s.force.setZero();
+          s.lever.setZero();
+          continue;
+        }
+        ContactKinematics k;
+        sphere_wall_kinematics(k, wall.normal, h, R[p], v[p], w[p], wall.velocity, im[p]);
+        k.overlap_old = s.overlap;
+        k.dt = dt_h;
+        k.mu = wall.mu;
+        const ContactForce f = law.evaluate(k, s.shear);
+        s.force = f.normal * k.normal + f.tangential;
+        s.lever = k.normal.cross(f.tangential);
+        s.overlap = k.overlap;
+        if constexpr (Track) {
+          damp += f.damping_loss;
+          fric += f.friction_loss;
+        }
+      }
+      if constexpr (Track) {
+        block_losses_[2 * (nbp + b)] = damp;
+        block_losses_[2 * (nbp + b) + 1] = fric;
+      }
+    }
+    // Pass B: gather per particle, incident slots in ascending order.
+    const auto& off = lists_.incident_offset;
+    const auto& inc = lists_.incident;
+    const auto& woff = lists_.wall_offset;
+#pragma omp for schedule(static)
+    for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
+      Vec3 f = store_.mass[p] * gravity_;
+      Vec3 t = Vec3::Zero();
+      const double Rp = R[p];
+      for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
+        const PairSlot& s = pairs[inc[e] >> 1];
+        if (inc[e] & 1u) f += s.force;
+        else f -= s.force;
+        t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
+      }
+      for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
+        const WallSlot& s = wslots[e];
+        f += s.force;
+        t -= (Rp - 0.5 * s.overlap) * s.lever;
+      }
+      store_.force[p] = f;
+      store_.torque[p] = t;
+    }
+  }
+
+  if constexpr (Track) {
+    for (std::size_t b = 0; b < nbp + nbw; ++b) {
+      losses_.dissipated_damping += block_losses_[2 * b];
+      losses_.dissipated_friction += block_losses_[2 * b + 1];
+    }
+  }
+
+  // Wall records, in slot order (few contacts: serial).
+  for (PlaneWall& wall : walls_) {
+    wall.force.setZero();
+    wall.torque.setZero();
+    wall.stiffness = 0.0;
+    wall.n_contacts = 0;
+  }
+  for (const WallSlot& s : wslots) {
+    if (!(s.overlap > 0.0)) continue;
+    PlaneWall& wall = walls_[s.wall];
+    const Index p = s.particle;
+    const Vec3 xc = x[p] - (R[p] - s.overlap) * wall.normal;  // contact point on the plane
+    wall.force -= s.force;
+    wall.torque += (xc - wall.point).cross(-s.force);
+    ContactKinematics k;
+    k.overlap = s.overlap;
+    k.m_eff = store_.mass[p];
+    k.r_eff = R[p];
+    wall.stiffness += law.normal().evaluate(k).stiffness;
+    ++wall.n_contacts;
+  }
+}
+
+// @sect4{Contacts and energy}
+
+std::vector<ContactRecord> DemSystem::contacts() const
+{
+  std::vector<ContactRecord> out;
+  const auto& x = store_.x;
+  const auto& R = store_.radius;
+  for (const PairSlot& s : lists_.pairs) {
+    if (!(s.overlap > 0.0)) continue;
+    ContactRecord c;
+    c.i = store_.id[s.i];
+    c.j = store_.id[s.j];
+    c.branch = x[s.j] - x[s.i];
+    c.normal = c.branch.normalized();
+    c.overlap = s.overlap;
+    c.force = s.force;
+    c.normal_force = s.force.dot(c.normal);
+    c.tangential_force = s.force - c.normal_force * c.normal;
+    c.point = x[s.i] + (R[s.i] - 0.5 * s.overlap) * c.normal;
+    out.push_back(c);
+  }
+  for (const WallSlot& s : lists_.walls) {
+    if (!(s.overlap > 0.0)) continue;
+    const PlaneWall& wall = walls_[s.wall];
+    ContactRecord c;
+    c.wall = true;
+    c.i = s.wall;
+    c.j = store_.id[s.particle];
+    c.normal = wall.normal;
+    c.overlap = s.overlap;
+    c.force = s.force;
+    c.normal_force = s.force.dot(c.normal);
+    c.tangential_force = s.force - c.normal_force * c.normal;
+    c.point = x[s.particle] - (R[s.particle] - s.overlap) * wall.normal;
+    c.branch = x[s.particle] - c.point;
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::size_t DemSystem::n_touching_pairs() const
+{
+  std::size_t c = 0;
+  for (const PairSlot& s : lists_.pairs) c += (s.overlap > 0.0) ? 1 : 0;
+  return c;
+}
+
+std::vector<ContactState> DemSystem::export_contact_state() const
+{
+  std::vector<ContactState> out;
+  for (const PairSlot& s : lists_.pairs)
+    if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0)
+      out.push_back({false, store_.id[s.i], store_.id[s.j], s.overlap, s.shear});
+  for (const WallSlot& s : lists_.walls)
+    if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0)
+      out.push_back({true, s.wall, store_.id[s.particle], s.overlap, s.shear});
+  return out;
+}
+
+void DemSystem::import_contact_state(const std::vector<ContactState>& states)
+{
+  std::vector<HistoryEntry> pairs, walls;
+  for (const ContactState& c : states) {
+    if (c.wall) {
+      if (c.i >= walls_.size()) throw std::invalid_argument("import_contact_state: unknown wall");
+      walls.push_back({wall_key(c.i, c.j), c.overlap, c.shear});
+    } else {
+      if (c.i >= index_of_.size() || c.j >= index_of_.size())
+        throw std::invalid_argument("import_contact_state: unknown particle id");
+      // Stored as acting on the higher id: flip if given the other way round.
+      const Vec3 shear = c.i < c.j ? c.shear : Vec3(-c.shear);
+      pairs.push_back({pair_key(c.i, c.j), c.overlap, shear});
+    }
+  }
+  search_.import_histories(std::move(pairs), std::move(walls));
+  rebuild_requested_ = true;
+  invalidate();
+}
+
+EnergyLedger DemSystem::energy() const
+{
+  EnergyLedger e = losses_;
+  for (Index p = 0; p < store_.size(); ++p) {
+    if (store_.inv_mass[p] == 0.0) continue;
+    e.kinetic_translational += 0.5 * store_.mass[p] * store_.v[p].squaredNorm();
+    e.kinetic_rotational += 0.5 / store_.inv_inertia[p] * store_.omega[p].squaredNorm();
+    e.gravitational -= store_.mass[p] * gravity_.dot(store_.x[p]);
+  }
+  std::visit(
+    [&](const auto& law) {
+      for (const PairSlot& s : lists_.pairs) {
+        if (!(s.overlap > 0.0)) continue;
+        const double m_eff = 1.0 / (store_.inv_mass[s.i] + store_.inv_mass[s.j]);
+        const double Ri = store_.radius[s.i], Rj = store_.radius[s.j];
+        const ContactEnergy c = law.elastic_energy(s.overlap, m_eff, Ri * Rj / (Ri + Rj), s.shear);
+        e.elastic_normal += c.normal;
+        e.elastic_tangential += c.tangential;
+      }
+      for (const WallSlot& s : lists_.walls) {
+        if (!(s.overlap > 0.0)) continue;
+        const ContactEnergy c =
+          law.elastic_energy(s.overlap, store_.mass[s.particle], store_.radius[s.particle], s.shear);
+        e.elastic_normal += c.normal;
+        e.elastic_tangential += c.tangential;
+      }
+    },
+    model_);
+  return e;
+}
+
+std::size_t DemSystem::memory_bytes() const
+{
+  return store_.memory_bytes() + index_of_.capacity() * sizeof(Index) + lists_.memory_bytes() +
+         search_.memory_bytes() + block_losses_.capacity() * sizeof(double) +
+         (walls_.capacity() * sizeof(PlaneWall)) + wall_force_old_.capacity() * sizeof(Vec3);
+}
+
+}  // namespace geocomp::dem

@@ -1,0 +1,190 @@
+// @sect3{The DemSystem class: the facade of the DEM engine}
+//
+// Why it exists: drivers (the loading program, servo control, packing, output, the
+// CLI) need one object that owns particles, walls, the contact law, the neighbour
+// lists and the integrator, and answers questions about contacts and energy. It runs
+// velocity Verlet with rotations (DEM-NOTES section 4):
+//   1. half kick: $v \mathrel{+}= \tfrac{\Delta t}{2}F/m$, $\omega \mathrel{+}= \tfrac{\Delta t}{2}T/I$;
+//   2. drift: $x \mathrel{+}= \Delta t\,v$, $q \leftarrow \exp(\Delta t\,\omega/2)\otimes q$; move walls;
+//   3. rebuild the lists if needed; contact forces $F, T$ at $x(t+\Delta t)$;
+//   4. half kick again.
+// Optional Cundall local damping (off by default) replaces each force component by
+// $F_k - \lambda|F_k|\,\mathrm{sign}(v_k)$ in both half kicks (preparation only: it is not
+// frame invariant).
+//
+// Contact forces are computed once per contact into per-contact slots (pass A, parallel
+// over contacts) and gathered per particle in a fixed order (pass B, parallel over
+// particles), so the same input gives bitwise the same trajectory for any thread count.
+// The law is a `ContactModel` (std::variant); the step dispatches on it once, and the
+// contact loop is compiled for the concrete law.
+//
+// Walls: `add_box()` adds six inward-facing planes (x-, x+, y-, y+, z-, z+), each with its
+// own velocity (`set_wall_velocity`, any time) and friction mu_p; after each step
+// `wall(k)` holds the force the particles exert on it, its torque, contact count,
+// stiffness and cumulative work.
+//
+// Contacts: `contacts()` lists touching contacts with ids, normal, overlap, forces,
+// branch vector and contact point (for Love-Weber stress, fabric, coordination);
+// `export_contact_state()` / `import_contact_state()` save and restore all tangential
+// histories, keyed by stable ids, for checkpoints.
+#pragma once
+
+#include "dem/ContactLaw.h"
+#include "dem/ContactLists.h"
+#include "dem/EnergyLedger.h"
+#include "dem/NeighbourSearch.h"
+#include "dem/ParticleStore.h"
+#include "dem/PlaneWall.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace geocomp::dem {
+
+/// One touching contact, as read by post-processing.
+struct ContactRecord
+{
+  bool wall = false;         ///< true: body i is wall number `i`
+  std::uint32_t i = 0;       ///< particle id (or wall index), the lower id of a pair
+  ParticleId j = 0;          ///< particle id
+  Vec3 normal;               ///< unit, from i to j
+  double overlap = 0.0;      ///< delta > 0
+  double normal_force = 0.0; ///< F . n (> 0 repulsive)
+  Vec3 tangential_force;     ///< on j
+  Vec3 force;                ///< total, on j (i receives -force)
+  Vec3 branch;               ///< x_j - x_i; wall: x_j - contact point
+  Vec3 point;                ///< contact point (mid-overlap; on the plane for walls)
+};
+
+/// Persistent state of one contact (tangential history), for checkpoints.
+struct ContactState
+{
+  bool wall = false;
+  std::uint32_t i = 0;  ///< lower particle id, or wall index
+  ParticleId j = 0;
+  double overlap = 0.0;
+  Vec3 shear = Vec3::Zero();
+};
+
+class DemSystem
+{
+public:
+  DemSystem();
+
+  // --- particles
+  /// Adds a sphere of radius R and density rho (mass 4/3 pi R^3 rho); returns its id.
+  ParticleId add_sphere(const Vec3& x, double radius, double density, const Vec3& v = Vec3::Zero(),
+                        const Vec3& omega = Vec3::Zero());
+  std::size_t n_particles() const { return store_.size(); }
+  /// Reserves storage for n particles (avoids over-allocation when adding many).
+  void reserve(std::size_t n) { store_.reserve(n); index_of_.reserve(n); }
+  /// Current storage index of a particle id.
+  Index index_of(ParticleId id) const { return index_of_[id]; }
+  /// Read access to all particle arrays (storage order; see index_of()).
+  const ParticleStore& particles() const { return store_; }
+  void set_position(ParticleId id, const Vec3& x);
+  void set_velocity(ParticleId id, const Vec3& v);
+  void set_angular_velocity(ParticleId id, const Vec3& omega);
+  /// Kinematic particle: infinite mass and inertia, moves with its set velocity.
+  void set_fixed(ParticleId id, bool fixed);
+  Vec3 position(ParticleId id) const { return store_.x[index_of_[id]]; }
+  Vec3 velocity(ParticleId id) const { return store_.v[index_of_[id]]; }
+  Vec3 angular_velocity(ParticleId id) const { return store_.omega[index_of_[id]]; }
+  Vec3 force(ParticleId id) const { return store_.force[index_of_[id]]; }
+  Vec3 torque(ParticleId id) const { return store_.torque[index_of_[id]]; }
+  Quat orientation(ParticleId id) const { return store_.orientation[index_of_[id]]; }
+
+  // --- walls
+  std::size_t add_wall(const PlaneWall& w);
+  /// Six faces of the box [lo, hi] with friction mu_p; returns the index of the first
+  /// (order x-, x+, y-, y+, z-, z+).
+  std::size_t add_box(const Vec3& lo, const Vec3& hi, double mu_p);
+  std::size_t n_walls() const { return walls_.size(); }
+  const PlaneWall& wall(std::size_t k) const { return walls_.at(k); }
+  void set_wall_velocity(std::size_t k, const Vec3& v) { walls_.at(k).velocity = v; }
+  /// Moves a wall (takes effect at the next force evaluation).
+  void set_wall_position(std::size_t k, const Vec3& point) { walls_.at(k).point = point; }
+  void set_wall_friction(std::size_t k, double mu) { walls_.at(k).mu = mu; }
+
+  // --- contact law
+  void set_contact_model(const ContactModel& m);
+  const ContactModel& contact_model() const { return model_; }
+  /// Particle-particle Coulomb coefficient mu_s.
+  void set_friction(double mu);
+  double friction() const { return mu_; }
+
+  // --- settings
+  void set_time_step(double dt);
+  double time_step() const { return dt_; }
+  /// Verlet skin s (default 0.1 of the largest diameter, set at the first step).
+  void set_skin(double s) { search_.set_skin(s); invalidate(); }
+  void set_num_threads(int n);
+  int num_threads() const { return threads_; }
+  void set_gravity(const Vec3& g) { gravity_ = g; invalidate(); }
+  /// Cundall local damping coefficient lambda_d (0: off, default).
+  void set_local_damping(double lambda) { local_damping_ = lambda; }
+  /// Accumulate dissipated energy every step (small cost; off by default).
+  void set_energy_tracking(bool on) { track_energy_ = on; }
+  /// Reorder particle storage by cell at rebuilds (default on).
+  void set_spatial_sorting(bool on) { search_.set_spatial_sorting(on); }
+  /// Critical-time-step estimate for the current law and particles: sqrt(m/k_max) for
+  /// linear springs, the S4 Rayleigh step for Hertz; multiply by a safety factor.
+  double critical_time_step() const;
+
+  // --- running
+  void step();
+  void run(std::size_t n_steps);
+  double time() const { return time_; }
+  std::uint64_t n_steps() const { return steps_; }
+  std::size_t n_rebuilds() const { return search_.n_builds(); }
+  /// Forces a neighbour-list rebuild at the next step (histories are carried over).
+  void request_rebuild() { rebuild_requested_ = true; }
+
+  // --- contacts
+  std::vector<ContactRecord> contacts() const;
+  /// Touching particle-particle contacts (C of Z = 2C/N).
+  std::size_t n_touching_pairs() const;
+  std::vector<ContactState> export_contact_state() const;
+  void import_contact_state(const std::vector<ContactState>& states);
+  /// Listed pair slots (touching or within the skin), storage indices.
+  const ContactLists& contact_lists() const { return lists_; }
+
+  // --- energy and memory
+  EnergyLedger energy() const;
+  std::size_t memory_bytes() const;
+
+private:
+  void invalidate() { ready_ = false; }
+  void prepare();
+  void rebuild();
+  void compute_forces(double dt_history);
+  template <class Law, bool Track>
+  void compute_forces_with(const Law& law, double dt_history);
+  double kick(double dt);
+  double kick_drift(double dt);
+  void refresh_index();
+
+  ParticleStore store_;
+  std::vector<Index> index_of_;
+  std::vector<PlaneWall> walls_;
+  ContactModel model_;
+  double mu_ = 0.0;
+  NeighbourSearch search_;
+  ContactLists lists_;
+
+  double dt_ = 0.0;
+  int threads_ = 1;
+  Vec3 gravity_ = Vec3::Zero();
+  double local_damping_ = 0.0;
+  bool track_energy_ = false;
+  bool ready_ = false;
+  bool rebuild_requested_ = true;
+
+  double time_ = 0.0;
+  std::uint64_t steps_ = 0;
+  EnergyLedger losses_{};             // dissipated_* and wall_work accumulate here
+  std::vector<double> block_losses_;  // per fixed-size block, summed in order
+  std::vector<Vec3> wall_force_old_;
+};
+
+}  // namespace geocomp::dem

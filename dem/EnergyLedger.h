@@ -1,0 +1,34 @@
+// @sect3{The EnergyLedger struct}
+//
+// Why it exists: an energy balance is the cheapest global check of a DEM run
+// (DEM-NOTES section 10.3): stored energy plus what was dissipated must equal the
+// initial energy plus the work the walls did,
+// $$ E_{kin} + E_{el} + E_{grav} + D_{damp} + D_{fric} + D_{local} = E_0 + W_{walls}. $$
+// Kinetic energy is $\sum\tfrac12 m v^2 + \tfrac12 I\omega^2$ (on-step velocities), elastic
+// is the normal and tangential springs of all touching contacts, $E_{grav} = -\sum m g\cdot x$.
+// Dissipation is accumulated per step only while energy tracking is on.
+#pragma once
+
+namespace geocomp::dem {
+
+struct EnergyLedger
+{
+  double kinetic_translational = 0.0;
+  double kinetic_rotational = 0.0;
+  double elastic_normal = 0.0;
+  double elastic_tangential = 0.0;
+  double gravitational = 0.0;
+  double dissipated_damping = 0.0;   ///< contact dashpots (normal + tangential)
+  double dissipated_friction = 0.0;  ///< Coulomb sliding
+  double dissipated_local = 0.0;     ///< Cundall local damping
+  double wall_work = 0.0;            ///< work done by the walls on the particles
+
+  double kinetic() const { return kinetic_translational + kinetic_rotational; }
+  double elastic() const { return elastic_normal + elastic_tangential; }
+  double mechanical() const { return kinetic() + elastic() + gravitational; }
+  double dissipated() const { return dissipated_damping + dissipated_friction + dissipated_local; }
+  /// Conserved quantity: mechanical + dissipated - wall work.
+  double balance() const { return mechanical() + dissipated() - wall_work; }
+};
+
+}  // namespace geocomp::dem

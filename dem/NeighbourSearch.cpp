@@ -1,0 +1,183 @@
+#include "dem/NeighbourSearch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace geocomp::dem {
+
+namespace {
+const HistoryEntry* find_history(const std::vector<HistoryEntry>& archive, std::uint64_t key)
+{
+  auto it = std::lower_bound(archive.begin(), archive.end(), key,
+                             [](const HistoryEntry& e, std::uint64_t k) { return e.key < k; });
+  return (it != archive.end() && it->key == key) ? &*it : nullptr;
+}
+}  // namespace
+
+void NeighbourSearch::set_skin(double s)
+{
+  if (!(s > 0.0)) throw std::invalid_argument("NeighbourSearch: skin must be positive");
+  skin_ = s;
+}
+
+bool NeighbourSearch::needs_rebuild(double max_displacement2, const std::vector<PlaneWall>& walls) const
+{
+  if (wall_ref_.size() != walls.size()) return true;
+  const double dp = std::sqrt(max_displacement2);
+  if (2.0 * dp > skin_) return true;
+  double dw = 0.0;
+  for (std::size_t w = 0; w < walls.size(); ++w)
+    dw = std::max(dw, std::abs((walls[w].point - wall_ref_[w]).dot(walls[w].normal)));
+  return dp + dw > skin_;
+}
+
+void NeighbourSearch::import_histories(std::vector<HistoryEntry> pairs, std::vector<HistoryEntry> walls)
+{
+  pair_archive_ = std::move(pairs);
+  wall_archive_ = std::move(walls);
+  std::sort(pair_archive_.begin(), pair_archive_.end());
+  std::sort(wall_archive_.begin(), wall_archive_.end());
+  imported_ = true;
+}
+
+void NeighbourSearch::archive(const ParticleStore& store, const ContactLists& lists)
+{
+  std::size_t active = 0;
+  for (const PairSlot& s : lists.pairs) active += (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0) ? 1 : 0;
+  pair_archive_.clear();
+  if (pair_archive_.capacity() < active) pair_archive_.reserve(active + active / 16);
+  for (const PairSlot& s : lists.pairs)
+    if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0)
+      pair_archive_.push_back({pair_key(store.id[s.i], store.id[s.j]), s.overlap, s.shear});
+  std::sort(pair_archive_.begin(), pair_archive_.end());
+  wall_archive_.clear();
+  for (const WallSlot& s : lists.walls)
+    if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0)
+      wall_archive_.push_back({wall_key(s.wall, store.id[s.particle]), s.overlap, s.shear});
+  std::sort(wall_archive_.begin(), wall_archive_.end());
+}
+
+bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>& walls, ContactLists& lists,
+                              int threads)
+{
+  if (!(skin_ > 0.0)) throw std::logic_error("NeighbourSearch: skin not set");
+  // (1) Histories by stable key, before any index changes.
+  if (!imported_) archive(store, lists);
+  imported_ = false;
+
+  const std::size_t n = store.size();
+  double r_max = 0.0;
+  for (double r : store.radius) r_max = std::max(r_max, r);
+  grid_.build(store.x, 2.0 * r_max + skin_);
+
+  // (2) Spatial sorting.
+  bool permuted = false;
+  if (sort_ && n > 1) {
+    const auto& order = grid_.sorted();
+    bool identity = true;
+    for (std::size_t k = 0; k < n && identity; ++k) identity = (order[k] == k);
+    if (!identity) {
+      store.permute(order);
+      grid_.adopt_sorted_order();
+      permuted = true;
+    }
+  }
+
+  // (3) Pair list: two passes (count, fill) over particles, each in its own range.
+  const auto& x = store.x;
+  const auto& R = store.radius;
+  const auto& body = store.body;
+  const auto& inv_m = store.inv_mass;
+  auto listed = [&](Index a, Index b) {
+    if (b <= a) return false;
+    if (body[a] != kOwnBody && body[a] == body[b]) return false;
+    if (inv_m[a] == 0.0 && inv_m[b] == 0.0) return false;
+    const double range = R[a] + R[b] + skin_;
+    return (x[b] - x[a]).squaredNorm() < range * range;
+  };
+  count_.assign(n + 1, 0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t a = 0; a < std::int64_t(n); ++a) {
+    std::uint32_t c = 0;
+    grid_.for_each_near(grid_.cell_of_particle(Index(a)), [&](Index b) { c += listed(Index(a), b) ? 1u : 0u; });
+    count_[a + 1] = c;
+  }
+  for (std::size_t a = 0; a < n; ++a) count_[a + 1] += count_[a];
+  const std::size_t n_pairs = count_[n];
+  if (lists.pairs.capacity() < n_pairs) lists.pairs.reserve(n_pairs + n_pairs / 8);
+  lists.pairs.resize(n_pairs);
+  const auto& id = store.id;
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t a = 0; a < std::int64_t(n); ++a) {
+    std::uint32_t k = count_[a];
+    grid_.for_each_near(grid_.cell_of_particle(Index(a)), [&](Index b) {
+      if (!listed(Index(a), b)) return;
+      PairSlot& s = lists.pairs[k++];
+      const bool keep = id[a] < id[b];  // canonical order: id_i < id_j
+      s.i = keep ? Index(a) : b;
+      s.j = keep ? b : Index(a);
+      // (4) Carry the history over.
+      const HistoryEntry* h = find_history(pair_archive_, pair_key(id[a], id[b]));
+      s.overlap = h ? h->overlap : 0.0;
+      s.shear = h ? h->shear : Vec3::Zero();
+      s.force.setZero();
+      s.lever.setZero();
+    });
+  }
+
+  // (5) Gather index: incident slots of every particle, ascending slot order.
+  lists.incident_offset.assign(n + 1, 0);
+  for (const PairSlot& s : lists.pairs) {
+    ++lists.incident_offset[s.i + 1];
+    ++lists.incident_offset[s.j + 1];
+  }
+  for (std::size_t p = 0; p < n; ++p) lists.incident_offset[p + 1] += lists.incident_offset[p];
+  if (lists.incident.capacity() < 2 * n_pairs) lists.incident.reserve(2 * n_pairs + n_pairs / 4);
+  lists.incident.resize(2 * n_pairs);
+  count_.assign(lists.incident_offset.begin(), lists.incident_offset.end() - 1);
+  for (std::size_t k = 0; k < n_pairs; ++k) {
+    const PairSlot& s = lists.pairs[k];
+    lists.incident[count_[s.i]++] = std::uint32_t(k << 1);
+    lists.incident[count_[s.j]++] = std::uint32_t((k << 1) | 1u);
+  }
+
+  // Wall candidates, sorted by particle.
+  lists.walls.clear();
+  lists.wall_offset.assign(n + 1, 0);
+  for (std::size_t p = 0; p < n; ++p) {
+    if (inv_m[p] != 0.0) {
+      for (std::size_t w = 0; w < walls.size(); ++w) {
+        if (walls[w].distance(x[p]) < R[p] + skin_) {
+          WallSlot s;
+          s.wall = Index(w);
+          s.particle = Index(p);
+          const HistoryEntry* h = find_history(wall_archive_, wall_key(std::uint32_t(w), id[p]));
+          if (h) {
+            s.overlap = h->overlap;
+            s.shear = h->shear;
+          }
+          lists.walls.push_back(s);
+        }
+      }
+    }
+    lists.wall_offset[p + 1] = std::uint32_t(lists.walls.size());
+  }
+
+  x_ref_ = store.x;
+  wall_ref_.resize(walls.size());
+  for (std::size_t w = 0; w < walls.size(); ++w) wall_ref_[w] = walls[w].point;
+  // Unit quaternions drift by round-off only; renormalise once per build.
+  for (Quat& q : store.orientation) q.normalize();
+  ++n_builds_;
+  return permuted;
+}
+
+std::size_t NeighbourSearch::memory_bytes() const
+{
+  return grid_.memory_bytes() + (x_ref_.capacity() + wall_ref_.capacity()) * sizeof(Vec3) +
+         count_.capacity() * sizeof(std::uint32_t) +
+         (pair_archive_.capacity() + wall_archive_.capacity()) * sizeof(HistoryEntry);
+}
+
+}  // namespace geocomp::dem

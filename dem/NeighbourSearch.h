@@ -1,0 +1,64 @@
+// @sect3{The NeighbourSearch class: Verlet lists on cells, with history carried over}
+//
+// Why it exists: contacts are evaluated from a list of candidate pairs (and
+// particle-wall candidates) that is rebuilt only when something may have come into
+// range (DEM-NOTES section 5):
+//  - a pair is listed if $|x_i - x_j| < R_i + R_j + s$, a wall candidate if $h < R + s$;
+//  - the lists stay valid while every particle moved less than s/2 since the build
+//    and, for walls, particle plus wall displacement stays below s.
+// A rebuild (1) archives the tangential histories keyed by stable ids, (2) optionally
+// reorders the particle storage into cell order (spatial sorting: neighbours become
+// neighbours in memory), (3) builds the new lists, (4) carries each history over by a
+// binary search on its key, and (5) builds the gather index. Everything is
+// deterministic and independent of the thread count. Pairs inside one rigid body and
+// pairs of two kinematic particles are never listed.
+#pragma once
+
+#include "dem/CellGrid.h"
+#include "dem/ContactLists.h"
+#include "dem/ParticleStore.h"
+#include "dem/PlaneWall.h"
+
+#include <vector>
+
+namespace geocomp::dem {
+
+class NeighbourSearch
+{
+public:
+  void set_skin(double s);
+  double skin() const { return skin_; }
+  void set_spatial_sorting(bool on) { sort_ = on; }
+
+  /// True when the lists may miss a contact, given the largest squared particle
+  /// displacement since the build.
+  bool needs_rebuild(double max_displacement2, const std::vector<PlaneWall>& walls) const;
+
+  /// Positions at the last build (the displacement criterion's reference).
+  const std::vector<Vec3>& reference_positions() const { return x_ref_; }
+
+  /// Rebuilds `lists` for the current positions, possibly permuting `store`.
+  /// Returns true if the storage order changed.
+  bool rebuild(ParticleStore& store, const std::vector<PlaneWall>& walls, ContactLists& lists, int threads);
+
+  /// Replaces the histories to be carried by the next rebuild (checkpoint import).
+  void import_histories(std::vector<HistoryEntry> pairs, std::vector<HistoryEntry> walls);
+
+  std::size_t n_builds() const { return n_builds_; }
+  std::size_t memory_bytes() const;
+
+private:
+  void archive(const ParticleStore& store, const ContactLists& lists);
+
+  double skin_ = 0.0;
+  bool sort_ = true;
+  bool imported_ = false;
+  std::size_t n_builds_ = 0;
+  CellGrid grid_;
+  std::vector<Vec3> x_ref_;
+  std::vector<Vec3> wall_ref_;
+  std::vector<std::uint32_t> count_;
+  std::vector<HistoryEntry> pair_archive_, wall_archive_;
+};
+
+}  // namespace geocomp::dem

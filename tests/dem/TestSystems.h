@@ -1,0 +1,36 @@
+// Small specimens shared by the DEM tests.
+#pragma once
+
+#include "dem/DemSystem.h"
+
+#include <random>
+
+namespace geocomp::dem::test {
+
+/// Linear spring-dashpot with k_n in N/m, restitution e, k_t = kt_ratio k_n, unclamped
+/// unless asked.
+inline LinearSpringDashpot linear_law(double k_n, double e, double kt_ratio = 2.0 / 7.0, bool clamp = false)
+{
+  return LinearSpringDashpot(LinearNormal::with_stiffness(k_n, e, clamp), LinearTangential::with_ratio(kt_ratio));
+}
+
+/// n equal spheres of radius R on a jittered cubic lattice with spacing 2.05 R in a box
+/// of six walls, random velocities of size v_scale (fixed seed).
+inline void fill_box(DemSystem& sys, int per_edge, double R, double v_scale, unsigned seed, double mu_wall = 0.0)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double a = 2.05 * R;
+  for (int i = 0; i < per_edge; ++i)
+    for (int j = 0; j < per_edge; ++j)
+      for (int k = 0; k < per_edge; ++k) {
+        const Vec3 x = Vec3(R + a * i, R + a * j, R + a * k) + 0.02 * R * Vec3(u(rng), u(rng), u(rng));
+        const Vec3 v = v_scale * Vec3(u(rng), u(rng), u(rng));
+        const Vec3 w = (v_scale / R) * Vec3(u(rng), u(rng), u(rng));
+        sys.add_sphere(x, R, 2650.0, v, w);
+      }
+  const double L = a * (per_edge - 1) + 2.0 * R;
+  sys.add_box(Vec3::Zero(), Vec3::Constant(L), mu_wall);
+}
+
+}  // namespace geocomp::dem::test
