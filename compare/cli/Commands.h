@@ -40,5 +40,11 @@ struct Arguments {
 // Registered by the files that implement them.
 Command check_command();
 Command print_parameters_command();
+Command material_point_command();
+Command continuum_command();
+Command pair_command();
+Command report_command();
+/// The command line, stored in every results file.
+void set_command_line(const std::string &line);
 
 } // namespace geocomp::cli

@@ -3,6 +3,8 @@
 
 #include "common/Version.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
 #include <iostream>
 
@@ -75,7 +77,14 @@ std::string Arguments::get(const std::string &name, const std::string &fallback)
 int main(int argc, char **argv)
 {
   using namespace geocomp::cli;
+  // MPI for the deal.II cube (mpirun -np N geocomp continuum ...); one thread per rank
+  // for deal.II's own task parallelism, the DEM uses OpenMP.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<std::string> args(argv + 1, argv + argc);
+  std::string line = "geocomp";
+  for (const auto &a : args)
+    line += " " + a;
+  set_command_line(line);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     print_help(std::cout);
     return args.empty() ? bad_input : ok;

@@ -1,0 +1,244 @@
+// `geocomp material-point|continuum|dem <case>` run one engine; `geocomp pair <case>` runs
+// every engine the case names (reusing up-to-date results), compares and reports;
+// `geocomp compare <dir>` and `geocomp report <dir>` work on existing results.
+#include "Commands.h"
+#include "Engines.h"
+#include "Progress.h"
+
+#include "common/ProgramRunner.h"
+#include "common/ResponseFile.h"
+#include "common/Version.h"
+#include "compare/Metrics.h"
+#include "compare/Report.h"
+
+#include <mpi.h>
+
+#include <filesystem>
+#include <iostream>
+
+namespace geocomp::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+int rank()
+{
+  int r = 0, initialized = 0;
+  MPI_Initialized(&initialized);
+  if (initialized)
+    MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+std::string command_line;
+
+/// Results of `engine` for case `c` in `dir` if they were made from the same case text by
+/// the same build; otherwise none.
+bool up_to_date(const fs::path &file, const CaseDescription &c)
+{
+  if (!fs::exists(file))
+    return false;
+  try {
+    RunMeta meta;
+    read_response(file, &meta);
+    return meta.case_text == c.text && meta.git_hash == GEOCOMP_GIT_HASH;
+  } catch (const std::exception &) {
+    return false;
+  }
+}
+
+/// Runs one engine through the program and writes <dir>/<engine>.h5 (rank 0).
+Response run_engine(const std::string &engine, const CaseDescription &c, const fs::path &dir, bool reuse)
+{
+  const fs::path file = dir / results_file(engine);
+  if (reuse && up_to_date(file, c)) {
+    if (rank() == 0)
+      std::cout << engine << ": up-to-date results reused: " << file.string() << "\n";
+    return read_response(file);
+  }
+  std::unique_ptr<LoadingEngine> e = make_engine(engine, c, dir.string());
+  ProgramRunner runner(c.program, *e);
+  ProgressPrinter progress(engine);
+  if (rank() == 0)
+    runner.on_progress([&progress](const RunProgress &p) { progress(p); });
+  Response r = runner.run();
+  progress.finish();
+  if (rank() == 0) {
+    RunMeta meta;
+    meta.case_file = c.file;
+    meta.case_text = c.text;
+    meta.command = command_line;
+    meta.seed = c.seed;
+    write_response(file, r, meta);
+    std::cout << engine << ": " << r.samples.size() << " samples, " << r.branches.size()
+              << " unloading branches -> " << file.string() << "\n";
+  }
+  return r;
+}
+
+std::string label_of(const std::string &engine)
+{
+  if (engine == "dem")
+    return "DEM";
+  if (engine == "continuum")
+    return "FE cube";
+  return "material point";
+}
+
+compare::ReportInput report_input(const CaseDescription &c, const std::vector<std::pair<std::string, Response>> &runs)
+{
+  compare::ReportInput in;
+  in.title = c.title.empty() ? "geocomp: " + c.file : c.title;
+  in.case_name = c.file;
+  in.kind = compare::curve_kind_for(c.program);
+  compare::MetricOptions options;
+  options.kind = in.kind;
+  for (const auto &[engine, response] : runs) {
+    in.responses.push_back({label_of(engine), response});
+    try {
+      in.metrics.push_back({label_of(engine), compare::compute_metrics(response, options)});
+    } catch (const std::exception &e) {
+      in.notes.push_back(label_of(engine) + ": metrics not computed: " + e.what());
+    }
+  }
+  in.notes.push_back("Stresses in the plots and tables: " +
+                     std::string(in.kind == compare::CurveKind::AxialLateral
+                                   ? "compression positive (axial curve)."
+                                   : "tau_max and gamma_max are sign-free."));
+  return in;
+}
+
+int write_and_say(const compare::ReportInput &in, const fs::path &dir)
+{
+  if (rank() != 0)
+    return ok;
+  const compare::ReportOutcome out = compare::write_report(in, dir / "report");
+  std::cout << "report: " << (out.dir / "index.html").string() << "\n";
+  if (!out.plots_made)
+    std::cout << "  (" << out.message << ")\n";
+  return ok;
+}
+
+struct RunOptions {
+  CaseDescription c;
+  fs::path dir;
+  bool reuse = true;
+};
+
+RunOptions parse_run(const std::vector<std::string> &args)
+{
+  const Arguments a = Arguments::parse(args, {"output"}, {"force"});
+  if (a.positional.size() != 1)
+    throw UsageError("expected exactly one case file");
+  RunOptions o;
+  o.c = read_case(a.positional[0]);
+  o.dir = a.has("output") ? fs::path(a.get("output")) : fs::path(o.c.output.directory);
+  o.reuse = !a.has("force");
+  return o;
+}
+
+/// Runs `body`, mapping failures onto exit codes: bad input 2, run failure 1.
+int guarded(const std::function<int()> &body)
+{
+  try {
+    return body();
+  } catch (const CaseError &e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return bad_input;
+  } catch (const UsageError &) {
+    throw;
+  } catch (const std::exception &e) {
+    std::cerr << "run failed: " << e.what() << "\n";
+    return run_failure;
+  }
+}
+
+Command engine_command(const std::string &engine, const std::string &summary, const std::string &details)
+{
+  Command c;
+  c.name = engine;
+  c.summary = summary;
+  c.usage = "usage: geocomp " + engine + " <case> [--output DIR] [--force]\n\n" + details +
+            "\nWrites <output directory>/" + results_file(engine) +
+            " (docs/results-format.md); --output overrides the case's\n"
+            "output directory; results made from the same case text by the same build are reused\n"
+            "unless --force.\n";
+  c.run = [engine](const std::vector<std::string> &args) {
+    RunOptions o = parse_run(args);
+    return guarded([&] {
+      run_engine(engine, o.c, o.dir, o.reuse);
+      return static_cast<int>(ok);
+    });
+  };
+  return c;
+}
+} // namespace
+
+void set_command_line(const std::string &line) { command_line = line; }
+
+Command material_point_command()
+{
+  return engine_command("material-point", "run the continuum model at one material point through the program",
+                        "Plays the case's loading program on one material point of the continuum model\n"
+                        "(mixed control: strain on kinematic axes, stress on servo axes, S0 eq. (3)).\n");
+}
+
+Command continuum_command()
+{
+  return engine_command("continuum", "run the deal.II Mohr-Coulomb cube through the program (mpirun -np N)",
+                        "Runs the case's loading program on the finite-element cube (deal.II, PETSc, MPI:\n"
+                        "`mpirun -np N geocomp continuum <case>`), with VTU field output per sample.\n");
+}
+
+Command pair_command()
+{
+  Command c;
+  c.name = "pair";
+  c.summary = "run every engine of a case (reusing up-to-date results), compare, write the report";
+  c.usage = "usage: geocomp pair <case> [--output DIR] [--force]\n\n"
+            "Runs (or reuses) each engine the case names on the same loading program, computes\n"
+            "the metrics of every Response (elastic limit, peak, softening, residual, dilatancy),\n"
+            "and writes <output directory>/report/index.html with plots and metrics.json.\n";
+  c.run = [](const std::vector<std::string> &args) {
+    RunOptions o = parse_run(args);
+    return guarded([&] {
+      std::vector<std::pair<std::string, Response>> runs;
+      for (const auto &engine : engine_names())
+        if (std::find(o.c.engines.begin(), o.c.engines.end(), engine) != o.c.engines.end())
+          runs.emplace_back(engine, run_engine(engine, o.c, o.dir, o.reuse));
+      return write_and_say(report_input(o.c, runs), o.dir);
+    });
+  };
+  return c;
+}
+
+Command report_command()
+{
+  Command c;
+  c.name = "report";
+  c.summary = "compare existing results of a case and write the report";
+  c.usage = "usage: geocomp report <case> [--output DIR]\n\n"
+            "Reads the results files of the case's engines from the output directory (nothing is\n"
+            "run) and writes the comparison report.\n";
+  c.run = [](const std::vector<std::string> &args) {
+    const Arguments a = Arguments::parse(args, {"output"}, {});
+    if (a.positional.size() != 1)
+      throw UsageError("expected exactly one case file");
+    return guarded([&] {
+      const CaseDescription cd = read_case(a.positional[0]);
+      const fs::path dir = a.has("output") ? fs::path(a.get("output")) : fs::path(cd.output.directory);
+      std::vector<std::pair<std::string, Response>> runs;
+      for (const auto &engine : engine_names()) {
+        const fs::path file = dir / results_file(engine);
+        if (fs::exists(file))
+          runs.emplace_back(engine, read_response(file));
+      }
+      if (runs.empty())
+        throw std::runtime_error("no results in " + dir.string() + "; run `geocomp pair` first");
+      return write_and_say(report_input(cd, runs), dir);
+    });
+  };
+  return c;
+}
+
+} // namespace geocomp::cli
