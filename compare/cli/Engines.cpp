@@ -16,7 +16,9 @@ continuum::PiecewiseLinear table(const HardeningTable &t, double scale)
   return continuum::PiecewiseLinear(points);
 }
 
-continuum::MaterialParameters material(const CaseDescription &c)
+} // namespace
+
+continuum::MaterialParameters continuum_material(const CaseDescription &c)
 {
   const ContinuumParameters &p = c.continuum;
   continuum::MaterialParameters m;
@@ -37,6 +39,7 @@ continuum::MaterialParameters material(const CaseDescription &c)
   return m;
 }
 
+namespace {
 /// Cube edge of the specimen: given, or from N, eta and R (S0: L0^3 eta = N 4/3 pi R^3).
 double box_size(const SpecimenParameters &s)
 {
@@ -55,13 +58,13 @@ const std::vector<std::string> &engine_names()
 std::string results_file(const std::string &engine) { return engine + ".h5"; }
 
 std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDescription &c,
-                                           const std::string &output_dir)
+                                           const std::string &output_dir, MPI_Comm communicator)
 {
   const double initial_stress = -c.specimen.isotropic_pressure; // tension positive
   if (name == "material-point") {
     continuum::MaterialPointParameters p;
     p.initial_stress = initial_stress;
-    return std::make_unique<continuum::MaterialPointEngine>(material(c), p);
+    return std::make_unique<continuum::MaterialPointEngine>(continuum_material(c), p);
   }
   if (name == "continuum") {
     continuum::CubeParameters p;
@@ -77,7 +80,7 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
     p.band_reference_width = c.continuum.reference_element_size;
     if (c.output.fields)
       p.output_directory = output_dir + "/continuum-fields";
-    return std::make_unique<continuum::CubeEngine>(p, material(c), MPI_COMM_WORLD);
+    return std::make_unique<continuum::CubeEngine>(p, continuum_material(c), communicator);
   }
   throw CaseError(c.file, "engines", "the '" + name + "' engine is not available in this build");
 }

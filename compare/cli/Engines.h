@@ -3,6 +3,9 @@
 // file's plain structs meet the engines' own parameter structs.
 #include "common/LoadingEngine.h"
 #include "common/case/CaseParameters.h"
+#include "continuum/driver/Materials.h"
+
+#include <mpi.h>
 
 #include <memory>
 #include <string>
@@ -16,7 +19,10 @@ const std::vector<std::string> &engine_names();
 /// start of the program (consolidated to the case's isotropic pressure). Throws CaseError
 /// for inconsistent parameters. `output_dir` receives the engine's field output.
 std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDescription &c,
-                                           const std::string &output_dir);
+                                           const std::string &output_dir, MPI_Comm communicator = MPI_COMM_WORLD);
+
+/// The continuum material of a case (Mohr-Coulomb tables in radians; throws CaseError).
+continuum::MaterialParameters continuum_material(const CaseDescription &c);
 
 /// File name of an engine's results inside the output folder.
 std::string results_file(const std::string &engine);

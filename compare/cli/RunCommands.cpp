@@ -8,6 +8,7 @@
 #include "common/ProgramRunner.h"
 #include "common/ResponseFile.h"
 #include "common/Version.h"
+#include "compare/LocalizationOnsets.h"
 #include "compare/Metrics.h"
 #include "compare/Report.h"
 
@@ -21,12 +22,15 @@ namespace geocomp::cli {
 namespace fs = std::filesystem;
 
 namespace {
+/// The communicator engines run on: the world for `continuum`/`pair`, one rank each in a sweep.
+MPI_Comm engine_comm = MPI_COMM_WORLD;
+
 int rank()
 {
   int r = 0, initialized = 0;
   MPI_Initialized(&initialized);
   if (initialized)
-    MPI_Comm_rank(MPI_COMM_WORLD, &r);
+    MPI_Comm_rank(engine_comm, &r);
   return r;
 }
 
@@ -50,13 +54,14 @@ bool up_to_date(const fs::path &file, const CaseDescription &c)
 /// Runs one engine through the program and writes <dir>/<engine>.h5 (rank 0).
 Response run_engine(const std::string &engine, const CaseDescription &c, const fs::path &dir, bool reuse)
 {
+  ensure_mpi();
   const fs::path file = dir / results_file(engine);
   if (reuse && up_to_date(file, c)) {
     if (rank() == 0)
       std::cout << engine << ": up-to-date results reused: " << file.string() << "\n";
     return read_response(file);
   }
-  std::unique_ptr<LoadingEngine> e = make_engine(engine, c, dir.string());
+  std::unique_ptr<LoadingEngine> e = make_engine(engine, c, dir.string(), engine_comm);
   ProgramRunner runner(c.program, *e);
   ProgressPrinter progress(engine);
   if (rank() == 0)
@@ -100,6 +105,22 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
     } catch (const std::exception &e) {
       in.notes.push_back(label_of(engine) + ": metrics not computed: " + e.what());
     }
+  }
+  // Rudnicki-Rice: the theory along the material-point path against each engine's onset.
+  const Response *point = nullptr;
+  std::vector<compare::OnsetEstimate> onsets;
+  for (const auto &[engine, response] : runs) {
+    if (engine == "material-point")
+      point = &response;
+    if (engine != "dem")
+      onsets.push_back(compare::acoustic_tensor_onset(response, label_of(engine) + " (acoustic tensor)", in.kind));
+  }
+  if (point) {
+    const continuum::MaterialParameters m = continuum_material(c);
+    in.verdict = compare::rudnicki_rice_verdict(
+      compare::rudnicki_rice_onset(*point, m.mohr_coulomb, m.drucker_prager_matching, in.kind), onsets);
+  } else {
+    in.notes.push_back("No Rudnicki-Rice prediction: add 'material-point' to the case's engines.");
   }
   in.notes.push_back("Stresses in the plots and tables: " +
                      std::string(in.kind == compare::CurveKind::AxialLateral
@@ -190,6 +211,8 @@ Command continuum_command()
                         "`mpirun -np N geocomp continuum <case>`), with VTU field output per sample.\n");
 }
 
+int pair_case(const CaseDescription &c, const fs::path &dir, bool reuse);
+
 Command pair_command()
 {
   Command c;
@@ -201,13 +224,58 @@ Command pair_command()
             "and writes <output directory>/report/index.html with plots and metrics.json.\n";
   c.run = [](const std::vector<std::string> &args) {
     RunOptions o = parse_run(args);
-    return guarded([&] {
-      std::vector<std::pair<std::string, Response>> runs;
-      for (const auto &engine : engine_names())
-        if (std::find(o.c.engines.begin(), o.c.engines.end(), engine) != o.c.engines.end())
-          runs.emplace_back(engine, run_engine(engine, o.c, o.dir, o.reuse));
-      return write_and_say(report_input(o.c, runs), o.dir);
-    });
+    return guarded([&] { return pair_case(o.c, o.dir, o.reuse); });
+  };
+  return c;
+}
+
+/// Runs every engine of a case, then the report (the body of `pair` and of each sweep item).
+int pair_case(const CaseDescription &c, const fs::path &dir, bool reuse)
+{
+  std::vector<std::pair<std::string, Response>> runs;
+  for (const auto &engine : engine_names())
+    if (std::find(c.engines.begin(), c.engines.end(), engine) != c.engines.end())
+      runs.emplace_back(engine, run_engine(engine, c, dir, reuse));
+  return write_and_say(report_input(c, runs), dir);
+}
+
+Command sweep_command()
+{
+  Command c;
+  c.name = "sweep";
+  c.summary = "run many independent cases, spread over MPI ranks (mpirun -np N geocomp sweep ...)";
+  c.usage = "usage: [mpirun -np N] geocomp sweep <case> [<case> ...] [--force]\n\n"
+            "Validates every case first (any bad case: exit 2, nothing run), then runs `pair` on\n"
+            "each, case k on rank k mod N (each case's engines on that one rank), and prints one\n"
+            "summary line per case. Exit 1 if any case failed.\n";
+  c.run = [](const std::vector<std::string> &args) {
+    const Arguments a = Arguments::parse(args, {}, {"force"});
+    if (a.positional.empty())
+      throw UsageError("expected at least one case file");
+    std::vector<CaseDescription> cases;
+    try {
+      for (const auto &f : a.positional)
+        cases.push_back(read_case(f));
+    } catch (const CaseError &e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return static_cast<int>(bad_input);
+    }
+    ensure_mpi();
+    int world_rank = 0, world_size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &world_rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &world_size);
+    engine_comm = MPI_COMM_SELF;
+    int failures = 0;
+    for (std::size_t k = world_rank; k < cases.size(); k += world_size) {
+      const int code = guarded([&] { return pair_case(cases[k], cases[k].output.directory, !a.has("force")); });
+      std::cout << "sweep: rank " << world_rank << " case " << cases[k].file << ": "
+                << (code == ok ? "done" : "FAILED") << " -> " << cases[k].output.directory << "\n";
+      failures += code != ok;
+    }
+    engine_comm = MPI_COMM_WORLD;
+    int total = 0;
+    MPI_Allreduce(&failures, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    return total == 0 ? static_cast<int>(ok) : static_cast<int>(run_failure);
   };
   return c;
 }

@@ -2,13 +2,30 @@
 #include "Commands.h"
 
 #include "common/Version.h"
+#include "common/case/CaseParameters.h"
 
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
+#include <memory>
 #include <iostream>
 
 namespace geocomp::cli {
+
+namespace {
+int saved_argc = 0;
+char **saved_argv = nullptr;
+std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+} // namespace
+
+void ensure_mpi()
+{
+  // Started only by commands that run engines: checking a case needs no MPI.
+  if (!mpi)
+    mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(saved_argc, saved_argv, 1);
+}
+
+void finalize_mpi() { mpi.reset(); }
 
 namespace {
 void print_help(std::ostream &out)
@@ -77,9 +94,8 @@ std::string Arguments::get(const std::string &name, const std::string &fallback)
 int main(int argc, char **argv)
 {
   using namespace geocomp::cli;
-  // MPI for the deal.II cube (mpirun -np N geocomp continuum ...); one thread per rank
-  // for deal.II's own task parallelism, the DEM uses OpenMP.
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  saved_argc = argc;
+  saved_argv = argv;
   std::vector<std::string> args(argv + 1, argv + argc);
   std::string line = "geocomp";
   for (const auto &a : args)
@@ -103,10 +119,18 @@ int main(int argc, char **argv)
         return ok;
       }
     try {
-      return c.run(rest);
+      const int code = c.run(rest);
+      finalize_mpi();
+      return code;
     } catch (const UsageError &e) {
       std::cerr << "geocomp " << c.name << ": " << e.what() << "\n\n" << c.usage;
       return bad_input;
+    } catch (const geocomp::CaseError &e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return bad_input;
+    } catch (const std::exception &e) {
+      std::cerr << "geocomp " << c.name << ": run failed: " << e.what() << "\n";
+      return run_failure;
     }
   }
   std::cerr << "geocomp: unknown command '" << args[0] << "'\n\n";

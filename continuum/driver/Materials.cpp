@@ -1,0 +1,128 @@
+#include "continuum/driver/Materials.h"
+
+#include "continuum/models/MohrCoulombModel.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace geocomp::continuum {
+
+LinearElasticModel::LinearElasticModel(double E, double nu) : elastic_(E, nu) {}
+
+MaterialPointUpdate LinearElasticModel::update(const Vector6 &total_strain, const PlasticHistory &old) const
+{
+  MaterialPointUpdate u;
+  u.history = old;
+  u.stress = elastic_.stiffness() * (total_strain - old.plastic_strain);
+  u.tangent = elastic_.stiffness();
+  u.region = ReturnRegion::elastic;
+  u.trial_yield_value = -1.0;
+  return u;
+}
+
+double softening_start(const std::vector<const PiecewiseLinear *> &laws)
+{
+  double start = std::numeric_limits<double>::infinity();
+  for (const PiecewiseLinear *law : laws) {
+    const auto &x = law->breakpoints();
+    const auto &y = law->values();
+    for (std::size_t i = 0; i + 1 < x.size(); ++i)
+      if (y[i + 1] < y[i]) {
+        start = std::min(start, x[i]);
+        break;
+      }
+  }
+  return start;
+}
+
+PiecewiseLinear stretch_after(const PiecewiseLinear &law, double kappa_s, double scale)
+{
+  std::vector<double> x = law.breakpoints();
+  for (double &xi : x)
+    if (xi > kappa_s)
+      xi = kappa_s + scale * (xi - kappa_s);
+  return PiecewiseLinear(x, law.values());
+}
+
+namespace {
+PiecewiseLinear scaled_values(const PiecewiseLinear &law, double factor)
+{
+  std::vector<double> y = law.values();
+  for (double &v : y)
+    v *= factor;
+  return PiecewiseLinear(law.breakpoints(), y);
+}
+
+class FixedFactory : public MaterialFactory {
+public:
+  explicit FixedFactory(std::shared_ptr<const ConstitutiveModel> m) : m_(std::move(m)) {}
+  std::shared_ptr<const ConstitutiveModel> make(const MaterialVariant &) const override { return m_; }
+
+private:
+  std::shared_ptr<const ConstitutiveModel> m_;
+};
+
+class MohrCoulombFactory : public MaterialFactory {
+public:
+  explicit MohrCoulombFactory(MohrCoulombParameters p) : p_(std::move(p)) { p_.validate(); }
+  std::shared_ptr<const ConstitutiveModel> make(const MaterialVariant &v) const override
+  {
+    MohrCoulombParameters q = p_;
+    const double ks = softening_start({&p_.cohesion, &p_.friction_angle});
+    if (v.softening_scale != 1.0 && std::isfinite(ks)) {
+      q.cohesion = stretch_after(q.cohesion, ks, v.softening_scale);
+      q.friction_angle = stretch_after(q.friction_angle, ks, v.softening_scale);
+      q.dilatancy_angle = stretch_after(q.dilatancy_angle, ks, v.softening_scale);
+    }
+    q.cohesion = scaled_values(q.cohesion, v.cohesion_factor);
+    return std::make_shared<MohrCoulombModel>(q);
+  }
+
+private:
+  MohrCoulombParameters p_;
+};
+
+class DruckerPragerFactory : public MaterialFactory {
+public:
+  explicit DruckerPragerFactory(DruckerPragerParameters p) : p_(std::move(p)) { p_.validate(); }
+  std::shared_ptr<const ConstitutiveModel> make(const MaterialVariant &v) const override
+  {
+    DruckerPragerParameters q = p_;
+    const double ks = softening_start({&p_.strength, &p_.friction});
+    if (v.softening_scale != 1.0 && std::isfinite(ks)) {
+      q.strength = stretch_after(q.strength, ks, v.softening_scale);
+      q.friction = stretch_after(q.friction, ks, v.softening_scale);
+      q.dilatancy = stretch_after(q.dilatancy, ks, v.softening_scale);
+    }
+    q.strength = scaled_values(q.strength, v.cohesion_factor);
+    return std::make_shared<DruckerPragerModel>(q);
+  }
+
+private:
+  DruckerPragerParameters p_;
+};
+} // namespace
+
+std::shared_ptr<const MaterialFactory> fixed_material(std::shared_ptr<const ConstitutiveModel> model)
+{
+  if (!model)
+    throw std::invalid_argument("continuum material: no model");
+  return std::make_shared<FixedFactory>(std::move(model));
+}
+
+std::shared_ptr<const MaterialFactory> make_material_factory(const MaterialParameters &p)
+{
+  if (p.model == "mohr-coulomb")
+    return std::make_shared<MohrCoulombFactory>(p.mohr_coulomb);
+  if (p.model == "drucker-prager")
+    return std::make_shared<DruckerPragerFactory>(
+      DruckerPragerParameters::from_mohr_coulomb(p.mohr_coulomb, p.drucker_prager_matching));
+  if (p.model == "linear-elastic")
+    return fixed_material(
+      std::make_shared<LinearElasticModel>(p.mohr_coulomb.youngs_modulus, p.mohr_coulomb.poisson_ratio));
+  throw std::invalid_argument("continuum material: model must be mohr-coulomb, drucker-prager or "
+                              "linear-elastic, got '" + p.model + "'");
+}
+
+} // namespace geocomp::continuum

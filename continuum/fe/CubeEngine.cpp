@@ -1,0 +1,842 @@
+// CubeEngine: setup, assembly, Newton-Raphson with line search, load stepping,
+// measurement, save/restore. The model and the method are described in CubeEngine.h;
+// the choices (walls, reactions, crack band) and measured behaviour in docs/continuum-fe.md.
+#include "continuum/fe/CubeEngineImpl.h"
+
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#if defined(GEOCOMP_CUBE_USE_PETSC)
+#include <deal.II/lac/petsc_precondition.h>
+#include <deal.II/lac/petsc_solver.h>
+#else
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#endif
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace geocomp::continuum {
+
+using namespace dealii;
+
+namespace {
+/// Mandel vector of a symmetric deal.II tensor (see continuum/models/Mandel.h).
+Vector6 mandel(const SymmetricTensor<2, 3> &t)
+{
+  const double s2 = std::sqrt(2.0);
+  Vector6 v;
+  v << t[0][0], t[1][1], t[2][2], s2 * t[1][2], s2 * t[0][2], s2 * t[0][1];
+  return v;
+}
+
+void check_parameters(const CubeParameters &p)
+{
+  auto fail = [](const std::string &name, const std::string &what) {
+    throw std::invalid_argument("continuum cube: parameter '" + name + "' " + what);
+  };
+  if (!(p.side > 0.0))
+    fail("side", "must be > 0");
+  if (p.cells_per_side < 1)
+    fail("cells per side", "must be >= 1");
+  if (p.degree < 1 || p.degree > 3)
+    fail("degree", "must be 1, 2 or 3");
+  if (p.linear_solver != "gmres" && p.linear_solver != "cg" && p.linear_solver != "direct")
+    fail("linear solver", "must be gmres, cg or direct");
+  if (p.preconditioner != "amg" && p.preconditioner != "jacobi")
+    fail("preconditioner", "must be amg or jacobi");
+  if (!(p.linear_tolerance > 0.0 && p.linear_tolerance < 1.0))
+    fail("linear tolerance", "must be in (0, 1)");
+  if (!(p.newton_tolerance > 0.0 && p.newton_tolerance < 1.0))
+    fail("newton tolerance", "must be in (0, 1)");
+  if (p.max_newton_iterations < 1 || p.steps_per_advance < 1)
+    fail("max newton iterations / steps per advance", "must be >= 1");
+  if (!(p.imperfection_radius >= 0.0))
+    fail("imperfection radius", "must be >= 0");
+  if (!(p.imperfection_cohesion_factor > 0.0 && p.imperfection_cohesion_factor <= 1.0))
+    fail("imperfection cohesion factor", "must be in (0, 1]");
+  if (p.regularization != "crack-band" && p.regularization != "none")
+    fail("regularization", "must be crack-band or none");
+  if (!(p.band_reference_width >= 0.0))
+    fail("band reference width", "must be >= 0");
+  if (p.localization_directions < 10)
+    fail("localization directions", "must be >= 10");
+  if (!(p.apex_tangent_fraction >= 0.0 && p.apex_tangent_fraction < 1.0))
+    fail("apex tangent fraction", "must be in [0, 1)");
+  if (p.output_every < 1)
+    fail("output every", "must be >= 1");
+}
+} // namespace
+
+// @sect3{Setup}
+
+CubeEngine::Impl::Impl(const CubeParameters &p, std::shared_ptr<const MaterialFactory> f, MPI_Comm c)
+  : comm(c)
+  , prm(p)
+  , factory(std::move(f))
+  , pcout(std::cout, p.verbose && Utilities::MPI::this_mpi_process(c) == 0)
+  , tria(c)
+  , fe(FE_Q<3>(p.degree), 3)
+  , dof_handler(tria)
+  , quadrature(p.degree + 1)
+  , face_quadrature(p.degree + 1)
+  , scan([&] {
+    AcousticTensorScan::Options o;
+    o.coarse_points = static_cast<int>(p.localization_directions);
+    return o;
+  }())
+{
+  check_parameters(prm);
+  if (!factory)
+    throw std::invalid_argument("continuum cube: no material");
+  make_mesh_and_dofs();
+  setup_quadrature_data();
+}
+
+// The cube is meshed as reps^3 coarse cells refined k times with n = reps 2^k, so
+// p4est has few trees and the refinement is uniform; colorize gives the walls the
+// boundary ids 0..5 = x=0, x=L, y=0, y=L, z=0, z=L.
+void CubeEngine::Impl::make_mesh_and_dofs()
+{
+  unsigned reps = prm.cells_per_side, levels = 0;
+  while (reps % 2 == 0 && reps > 2) {
+    reps /= 2;
+    ++levels;
+  }
+  const double L = prm.side;
+  GridGenerator::subdivided_hyper_rectangle(tria, {reps, reps, reps}, Point<3>(0, 0, 0), Point<3>(L, L, L),
+                                            /*colorize=*/true);
+  tria.refine_global(levels);
+  h_e = L / prm.cells_per_side;
+
+  dof_handler.distribute_dofs(fe);
+  owned = dof_handler.locally_owned_dofs();
+  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+
+  for (unsigned a = 0; a < 3; ++a) {
+    ComponentMask mask(3, false);
+    mask.set(a, true);
+    top_face_dofs[a] = DoFTools::extract_boundary_dofs(dof_handler, mask, {types::boundary_id(2 * a + 1)});
+    bottom_face_dofs[a] = DoFTools::extract_boundary_dofs(dof_handler, mask, {types::boundary_id(2 * a)});
+    top_face_dofs[a] = top_face_dofs[a] & relevant;
+    bottom_face_dofs[a] = bottom_face_dofs[a] & relevant;
+  }
+
+  // The full coupling pattern: the wall constraints only fix dofs, so one pattern serves
+  // every control (the constrained rows are condensed at assembly).
+  DynamicSparsityPattern dsp(relevant);
+  DoFTools::make_sparsity_pattern(dof_handler, dsp);
+  SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+  matrix.reinit(owned, owned, dsp, comm);
+  {
+    std::vector<std::vector<bool>> modes;
+    DoFTools::extract_constant_modes(dof_handler, ComponentMask(3, true), modes);
+    constant_modes = modes;
+  }
+
+  solution.reinit(owned, relevant, comm);
+  solution_owned.reinit(owned, comm);
+  old_solution.reinit(owned, comm);
+  rhs.reinit(owned, comm);
+  internal_force.reinit(owned, comm);
+  update.reinit(owned, comm);
+}
+
+// Every locally owned quadrature point gets its history, its position and its material:
+// the base material with the crack-band scale of this mesh, or inside the imperfection
+// the same with reduced cohesion.
+void CubeEngine::Impl::setup_quadrature_data()
+{
+  MaterialVariant base, weak;
+  if (prm.regularization == "crack-band") {
+    const double l_ref = prm.band_reference_width > 0.0 ? prm.band_reference_width : prm.side;
+    base.softening_scale = l_ref / h_e;
+  }
+  weak = base;
+  weak.cohesion_factor = prm.imperfection_cohesion_factor;
+  materials[base] = factory->make(base);
+  if (prm.imperfection_radius > 0.0)
+    materials[weak] = factory->make(weak);
+  elastic_tangent = materials[base]->elasticity().stiffness();
+  prestrain = materials[base]->elasticity().compliance() * to_mandel(prm.initial_stress * Tensor3::Identity());
+
+  FEValues<3> fe_values(fe, quadrature, update_quadrature_points | update_JxW_values);
+  const Point<3> centre(prm.imperfection_centre[0], prm.imperfection_centre[1], prm.imperfection_centre[2]);
+  for (const auto &cell : dof_handler.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    qp_data.initialize(Cell(cell), quadrature.size());
+    fe_values.reinit(cell);
+    const auto data = qp_data.get_data(Cell(cell));
+    for (unsigned q = 0; q < quadrature.size(); ++q) {
+      QuadraturePointData &d = *data[q];
+      const Point<3> &x = fe_values.quadrature_point(q);
+      d.position = Vector3(x[0], x[1], x[2]);
+      d.JxW = fe_values.JxW(q);
+      d.weak = prm.imperfection_radius > 0.0 && x.distance(centre) < prm.imperfection_radius;
+      d.material = (d.weak ? materials[weak] : materials[base]).get();
+      d.trial = d.material->update(prestrain, PlasticHistory{});
+      d.old_stress = d.trial.stress;
+    }
+  }
+}
+
+// Homogeneous wall constraints of the current control: the normal component on the three
+// fixed walls, and on the moving walls of kinematic axes.
+void CubeEngine::Impl::build_constraints()
+{
+  constraints.clear();
+  constraints.reinit(relevant);
+  for (unsigned a = 0; a < 3; ++a) {
+    for (const auto i : bottom_face_dofs[a])
+      constraints.add_line(i);
+    if (control.kinematic(a))
+      for (const auto i : top_face_dofs[a])
+        constraints.add_line(i);
+  }
+  constraints.close();
+}
+
+double CubeEngine::Impl::target_stress(int axis, double t) const
+{
+  const double target = control.target_stress(axis);
+  if (ramp_t1 <= ramp_t0 || t >= ramp_t1)
+    return target;
+  const double f = std::clamp((t - ramp_t0) / (ramp_t1 - ramp_t0), 0.0, 1.0);
+  return ramp_from[axis] + f * (target - ramp_from[axis]);
+}
+
+// @sect3{Assembly}
+//
+// One pass over the locally owned cells evaluates the material at every quadrature point
+// for the current iterate (Delta eps = eps(u) - eps_n from the committed state) and adds
+//     R_i = int B_i : sigma dV - int_{Gamma_t} N_i . t dA,   K_ij = int B_i : C_alg : B_j dV.
+// With Mandel vectors b_i of sym grad N_i, B_i : sigma = b_i . sigma_M and
+// B_i : C : B_j = b_i . (C_M b_j). The residual is condensed with the homogeneous wall
+// constraints (constrained rows vanish); the unconstrained internal force is kept for the
+// wall reactions.
+double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
+{
+  Timer timer;
+  FEValues<3> fe_values(fe, quadrature, update_gradients | update_JxW_values);
+  FEFaceValues<3> fe_face_values(fe, face_quadrature, update_values | update_JxW_values);
+  const FEValuesExtractors::Vector displacement(0);
+  const unsigned dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
+
+  FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+  dealii::Vector<double> cell_rhs(dofs_per_cell), cell_force(dofs_per_cell);
+  std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+  std::vector<SymmetricTensor<2, 3>> strains(n_q);
+  std::vector<Vector6> b(dofs_per_cell), Cb(dofs_per_cell);
+
+  if (with_matrix)
+    matrix = 0.0;
+  rhs = 0.0;
+  internal_force = 0.0;
+  double external_norm2 = 0.0;
+  bool failed = false;
+  const double L = prm.side;
+
+  for (const auto &cell : dof_handler.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    fe_values.reinit(cell);
+    cell->get_dof_indices(dof_indices);
+    fe_values[displacement].get_function_symmetric_gradients(solution, strains);
+    const auto data = qp_data.get_data(Cell(cell));
+    cell_matrix = 0.0;
+    cell_force = 0.0;
+    for (unsigned q = 0; q < n_q; ++q) {
+      QuadraturePointData &d = *data[q];
+      try {
+        d.trial = d.material->update(mandel(strains[q]) + prestrain, d.old_history);
+      } catch (const ReturnMapFailure &) {
+        failed = true; // every rank still finishes the pass (collective compress below)
+        d.trial.stress = d.old_stress;
+        d.trial.tangent = elastic_tangent;
+      }
+      const Vector6 &sigma = d.trial.stress;
+      const double JxW = fe_values.JxW(q);
+      for (unsigned i = 0; i < dofs_per_cell; ++i) {
+        b[i] = mandel(fe_values[displacement].symmetric_gradient(i, q));
+        cell_force(i) += b[i].dot(sigma) * JxW;
+      }
+      if (with_matrix) {
+        const Matrix6 C = d.trial.region == ReturnRegion::apex
+                            ? Matrix6(d.trial.tangent + prm.apex_tangent_fraction * elastic_tangent)
+                            : d.trial.tangent;
+        for (unsigned j = 0; j < dofs_per_cell; ++j)
+          Cb[j] = C * b[j];
+        for (unsigned i = 0; i < dofs_per_cell; ++i)
+          for (unsigned j = 0; j < dofs_per_cell; ++j)
+            cell_matrix(i, j) += b[i].dot(Cb[j]) * JxW;
+      }
+    }
+    // Tractions on the moving walls of stress axes: t = sigma*_a e_a on x_a = L.
+    cell_rhs = 0.0; // F_ext of the cell
+    for (unsigned a = 0; a < 3; ++a) {
+      if (control.kinematic(a))
+        continue;
+      const double traction = target_stress(a, t);
+      for (const unsigned f : cell->face_indices()) {
+        if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != 2 * a + 1)
+          continue;
+        fe_face_values.reinit(cell, f);
+        for (unsigned q = 0; q < face_quadrature.size(); ++q)
+          for (unsigned i = 0; i < dofs_per_cell; ++i)
+            if (fe.system_to_component_index(i).first == a)
+              cell_rhs(i) += fe_face_values.shape_value(i, q) * traction * fe_face_values.JxW(q);
+      }
+    }
+    external_norm2 += cell_rhs.norm_sqr(); // |F_ext|^2 up to shared-node cross terms
+    internal_force.add(dof_indices, cell_force);
+    cell_rhs -= cell_force; // -R = F_ext - F_int
+    if (with_matrix)
+      (predictor ? predictor_constraints : constraints)
+        .distribute_local_to_global(cell_matrix, cell_rhs, dof_indices, matrix, rhs);
+    else
+      constraints.distribute_local_to_global(cell_rhs, dof_indices, rhs);
+  }
+  if (with_matrix)
+    matrix.compress(VectorOperation::add);
+  rhs.compress(VectorOperation::add);
+  internal_force.compress(VectorOperation::add);
+
+  const double f_int = internal_force.l2_norm();
+  const double f_ext = std::sqrt(Utilities::MPI::sum(external_norm2, comm));
+  // Floor: the force of a stress of 1e-6 of the elastic modulus on one cell face.
+  const double floor = 1e-6 * elastic_tangent(0, 0) * (L / prm.cells_per_side) * (L / prm.cells_per_side);
+  residual_scale = std::max({f_int, f_ext, floor});
+  stats.assembly_seconds += timer.wall_time();
+  if (Utilities::MPI::max(failed ? 1 : 0, comm) != 0)
+    return std::numeric_limits<double>::quiet_NaN(); // a return map failed: cut back
+  return rhs.l2_norm();
+}
+
+// @sect3{Linear solver}
+//
+// GMRES for the non-symmetric tangent of non-associated flow, CG for a symmetric one, or a
+// direct solver (Amesos/KLU with Trilinos, MUMPS with PETSc). The Krylov solvers use
+// algebraic multigrid: ML smoothed aggregation with the rigid translations as near-null
+// space (Trilinos), or hypre's BoomerAMG (PETSc; about 9x slower here, the scalar AMG does
+// not know the three displacement components belong together). The tolerance is a
+// reduction of the initial residual.
+unsigned CubeEngine::Impl::solve_linear(double reduction)
+{
+  Timer timer;
+  // Relative reduction, with an absolute floor well below what Newton asks for (a right-
+  // hand side already at round-off cannot be reduced further).
+  ReductionControl control_(prm.max_linear_iterations, 1e-3 * prm.newton_tolerance * residual_scale, reduction);
+  update = 0.0;
+#if defined(GEOCOMP_CUBE_USE_PETSC)
+  if (prm.linear_solver == "direct") {
+    PETScWrappers::SparseDirectMUMPS solver(control_, comm);
+    solver.solve(matrix, update, rhs);
+  } else {
+    std::unique_ptr<PETScWrappers::PreconditionBase> preconditioner;
+    if (prm.preconditioner == "amg") {
+      PETScWrappers::PreconditionBoomerAMG::AdditionalData data;
+      data.symmetric_operator = prm.linear_solver == "cg";
+      data.strong_threshold = 0.7; // measured best for this 3-component problem (docs)
+      preconditioner = std::make_unique<PETScWrappers::PreconditionBoomerAMG>(matrix, data);
+    } else {
+      preconditioner = std::make_unique<PETScWrappers::PreconditionJacobi>(matrix);
+    }
+    if (prm.linear_solver == "cg") {
+      PETScWrappers::SolverCG solver(control_, comm);
+      solver.solve(matrix, update, rhs, *preconditioner);
+    } else {
+      PETScWrappers::SolverGMRES solver(control_, comm,
+                                        PETScWrappers::SolverGMRES::AdditionalData(100, true));
+      solver.solve(matrix, update, rhs, *preconditioner);
+    }
+  }
+#else
+  if (prm.linear_solver == "direct") {
+    TrilinosWrappers::SolverDirect solver(control_);
+    solver.solve(matrix, update, rhs);
+  } else {
+    std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
+    if (prm.preconditioner == "amg") {
+      // ML smoothed aggregation with the three rigid translations as near-null space.
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic = true;
+      data.higher_order_elements = prm.degree > 1;
+      data.smoother_sweeps = 2;
+      data.aggregation_threshold = 0.02;
+      data.constant_modes = constant_modes;
+      auto amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      amg->initialize(matrix, data);
+      preconditioner = std::move(amg);
+    } else {
+      auto jacobi = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
+      jacobi->initialize(matrix);
+      preconditioner = std::move(jacobi);
+    }
+    if (prm.linear_solver == "cg") {
+      TrilinosWrappers::SolverCG solver(control_);
+      solver.solve(matrix, update, rhs, *preconditioner);
+    } else {
+      TrilinosWrappers::SolverGMRES solver(control_, TrilinosWrappers::SolverGMRES::AdditionalData(false, 100));
+      solver.solve(matrix, update, rhs, *preconditioner);
+    }
+  }
+#endif
+  stats.solve_seconds += timer.wall_time();
+  stats.linear_iterations += control_.last_step();
+  return control_.last_step();
+}
+
+// @sect3{Newton-Raphson for one load step}
+//
+// Predictor: the tangent at the committed state with the increments of the wall
+// displacements as inhomogeneous constraints (exact for a linear problem). Corrector:
+// K du = -R with homogeneous wall constraints, u <- u + alpha du, alpha halved (at most
+// `line_search_steps` times) until |R(u + alpha du)| <= (1 - 1e-4 alpha) |R(u)|.
+// Converged when |R_free| <= newton_tolerance * max(|F_int|, |F_ext|).
+bool CubeEngine::Impl::solve_step(double t)
+{
+  const double L = prm.side;
+  std::array<double, 3> wall{};
+  for (unsigned a = 0; a < 3; ++a)
+    wall[a] = control.kinematic(a) ? control.strain(a, t) * L : 0.0;
+
+  predictor_constraints.clear();
+  predictor_constraints.reinit(relevant);
+  for (unsigned a = 0; a < 3; ++a) {
+    for (const auto i : bottom_face_dofs[a])
+      predictor_constraints.add_line(i);
+    if (control.kinematic(a))
+      for (const auto i : top_face_dofs[a]) {
+        predictor_constraints.add_line(i);
+        predictor_constraints.set_inhomogeneity(i, wall[a] - solution(i));
+      }
+  }
+  predictor_constraints.close();
+
+  stats.last_step_residuals.clear();
+  try {
+    assemble(t, true, true);
+    solve_linear(prm.linear_tolerance); // exact predictor: one solve per elastic step
+  } catch (const std::exception &e) {
+    pcout << "    predictor failed: " << e.what() << '\n';
+    return false;
+  }
+  predictor_constraints.distribute(update);
+  solution_owned = old_solution;
+  solution_owned += update;
+  // The walls exactly where the program puts them (no accumulated round-off).
+  for (unsigned a = 0; a < 3; ++a)
+    if (control.kinematic(a))
+      for (const auto i : top_face_dofs[a])
+        if (owned.is_element(i))
+          solution_owned(i) = wall[a];
+  solution_owned.compress(VectorOperation::insert);
+  solution = solution_owned;
+
+  unsigned iterations = 1;
+  double r = assemble(t, false, false);
+  while (true) {
+    const double rel = r / residual_scale;
+    stats.last_step_residuals.push_back(rel);
+    pcout << "    t = " << t << "  it " << iterations << "  |R|/F = " << rel << '\n';
+    if (!std::isfinite(rel))
+      return false;
+    if (rel <= prm.newton_tolerance)
+      break;
+    if (iterations >= prm.max_newton_iterations)
+      return false;
+    ++iterations;
+    assemble(t, true, false);
+    try {
+      // Inexact Newton (Eisenstat-Walker type forcing): the Krylov reduction follows the
+      // Newton residual, eta = clamp(0.1 |R|/F, linear_tolerance, 1e-3), which keeps the
+      // quadratic rate (|R_next| ~ max(eta |R|, C |R|^2)) at a fraction of the iterations.
+      solve_linear(std::clamp(0.1 * r / residual_scale, prm.linear_tolerance, 1e-3));
+    } catch (const std::exception &e) {
+      pcout << "    linear solve failed: " << e.what() << '\n';
+      return false;
+    }
+    constraints.distribute(update);
+    const LA::MPI::Vector base(solution_owned);
+    double alpha = 1.0, r_trial = 0.0;
+    for (unsigned ls = 0;; ++ls) {
+      solution_owned = base;
+      solution_owned.add(alpha, update);
+      solution = solution_owned;
+      r_trial = assemble(t, false, false);
+      if (r_trial <= (1.0 - 1e-4 * alpha) * r || ls >= prm.line_search_steps)
+        break;
+      alpha *= 0.5;
+    }
+    r = r_trial;
+  }
+  stats.last_step_iterations = iterations;
+  interval_iterations += iterations;
+  stats.newton_iterations += iterations;
+  return true;
+}
+
+void CubeEngine::Impl::commit()
+{
+  for (const auto &cell : tria.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &d : qp_data.get_data(cell)) {
+        d->old_history = d->trial.history;
+        d->old_stress = d->trial.stress;
+        d->old_region = d->trial.region;
+      }
+  old_solution = solution_owned;
+  committed_wall_stress = wall_stresses();
+}
+
+void CubeEngine::Impl::revert()
+{
+  for (const auto &cell : tria.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &d : qp_data.get_data(cell)) {
+        d->trial.history = d->old_history;
+        d->trial.stress = d->old_stress;
+        d->trial.region = d->old_region;
+      }
+  solution_owned = old_solution;
+  solution = solution_owned;
+}
+
+// @sect3{Localization indicator}
+//
+// Rice's indicator at every plastic quadrature point of the committed state (elastic
+// points have q = 1), the global minimum, and the first time it reaches 0: that point's
+// position and band normal are the onset record.
+void CubeEngine::Impl::update_localization(double t)
+{
+  struct {
+    double q;
+    int rank;
+  } local{1.0, static_cast<int>(Utilities::MPI::this_mpi_process(comm))}, global{};
+  Vector3 where = Vector3::Zero(), normal = Vector3::Zero();
+  for (const auto &cell : tria.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &d : qp_data.get_data(cell)) {
+        if (d->old_region == ReturnRegion::elastic) {
+          d->q = 1.0;
+          continue;
+        }
+        const LocalizationResult loc = scan.scan(d->trial.tangent, d->material->elasticity().stiffness());
+        d->q = loc.min_ratio;
+        d->normal = loc.normal;
+        int big = 0; // sign convention: the largest component positive
+        d->normal.cwiseAbs().maxCoeff(&big);
+        if (d->normal[big] < 0)
+          d->normal = -d->normal;
+        if (loc.min_ratio < local.q) {
+          local.q = loc.min_ratio;
+          where = d->position;
+          normal = loc.normal;
+        }
+      }
+  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
+  double buffer[6] = {where[0], where[1], where[2], normal[0], normal[1], normal[2]};
+  MPI_Bcast(buffer, 6, MPI_DOUBLE, global.rank, comm);
+  q_min = global.q;
+  if (onset_time < 0.0 && q_min <= 0.0) {
+    onset_time = t;
+    onset_position = Vector3(buffer[0], buffer[1], buffer[2]);
+    onset_normal = Vector3(buffer[3], buffer[4], buffer[5]);
+  }
+}
+
+// @sect3{Measurement}
+
+Vector3 CubeEngine::Impl::wall_stresses() const
+{
+  Vector3 force = Vector3::Zero();
+  for (unsigned a = 0; a < 3; ++a)
+    for (const auto i : top_face_dofs[a])
+      if (owned.is_element(i))
+        force[a] += internal_force(i);
+  for (unsigned a = 0; a < 3; ++a)
+    force[a] = Utilities::MPI::sum(force[a], comm);
+  return force / (prm.side * prm.side);
+}
+
+Vector3 CubeEngine::Impl::face_strains() const
+{
+  FEFaceValues<3> fe_face_values(fe, face_quadrature, update_values | update_JxW_values);
+  const FEValuesExtractors::Vector displacement(0);
+  std::vector<Tensor<1, 3>> u(face_quadrature.size());
+  Vector3 integral = Vector3::Zero();
+  for (const auto &cell : dof_handler.active_cell_iterators()) {
+    if (!cell->is_locally_owned() || !cell->at_boundary())
+      continue;
+    for (const unsigned f : cell->face_indices()) {
+      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() % 2 == 0)
+        continue;
+      const unsigned a = cell->face(f)->boundary_id() / 2;
+      fe_face_values.reinit(cell, f);
+      fe_face_values[displacement].get_function_values(solution, u);
+      for (unsigned q = 0; q < face_quadrature.size(); ++q)
+        integral[a] += u[q][a] * fe_face_values.JxW(q);
+    }
+  }
+  for (unsigned a = 0; a < 3; ++a)
+    integral[a] = Utilities::MPI::sum(integral[a], comm);
+  const double L = prm.side;
+  return integral / (L * L * L);
+}
+
+Tensor3 CubeEngine::Impl::volume_average_stress() const
+{
+  Tensor3 s = Tensor3::Zero();
+  for (const auto &cell : tria.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &d : qp_data.get_data(cell))
+        s += from_mandel(d->old_stress) * d->JxW;
+  Tensor3 global;
+  MPI_Allreduce(s.data(), global.data(), 9, MPI_DOUBLE, MPI_SUM, comm);
+  return global / std::pow(prm.side, 3);
+}
+
+// @sect3{The LoadingEngine interface}
+
+CubeEngine::CubeEngine(const CubeParameters &parameters, std::shared_ptr<const MaterialFactory> material,
+                       MPI_Comm communicator)
+  : impl_(std::make_unique<Impl>(parameters, std::move(material), communicator))
+{}
+
+CubeEngine::CubeEngine(const CubeParameters &parameters, const MaterialParameters &material,
+                       MPI_Comm communicator)
+  : CubeEngine(parameters, make_material_factory(material), communicator)
+{}
+
+CubeEngine::~CubeEngine() = default;
+
+const CubeStatistics &CubeEngine::statistics() const { return impl_->stats; }
+unsigned CubeEngine::n_dofs() const { return impl_->dof_handler.n_dofs(); }
+double CubeEngine::element_size() const { return impl_->h_e; }
+
+std::vector<ExtraColumn> CubeEngine::extra_columns() const
+{
+  return {{"newton_iterations", "1", "mean Newton iterations (linear solves) per load step in the last interval"},
+          {"load_steps", "1", "converged load steps in the last interval"},
+          {"cutbacks", "1", "load-step cut-backs in the last interval"},
+          {"plastic_fraction", "1", "volume fraction of plastic quadrature points"},
+          {"kappa_max", "1", "largest equivalent plastic strain"},
+          {"localization_q", "1", "min over points of min_n det(n.C_ep.n)/det(n.C_e.n) (<= 0 localized)"},
+          {"localization_onset_time", "s", "program time of the first q <= 0 (-1: not yet)"},
+          {"localization_x", "m", "onset point, x"},
+          {"localization_y", "m", "onset point, y"},
+          {"localization_z", "m", "onset point, z"},
+          {"localization_nx", "1", "band normal at onset, x"},
+          {"localization_ny", "1", "band normal at onset, y"},
+          {"localization_nz", "1", "band normal at onset, z"}};
+}
+
+void CubeEngine::begin_control(const StageControl &control)
+{
+  Impl &m = *impl_;
+  m.control = control;
+  m.has_control = true;
+  m.build_constraints();
+  // Ramp only the stress targets that change (a control resumed after a branch must
+  // follow exactly the path it would have followed without the branch).
+  bool changes = false;
+  for (int a = 0; a < 3; ++a) {
+    m.ramp_from[a] = m.committed_wall_stress[a];
+    if (!control.kinematic(a)) {
+      const double target = control.target_stress(a);
+      const double scale = std::max({std::abs(target), std::abs(m.ramp_from[a]), 1.0});
+      if (std::abs(m.ramp_from[a] - target) > 1e-6 * scale)
+        changes = true;
+      else
+        m.ramp_from[a] = target;
+    }
+  }
+  m.ramp_t0 = m.time;
+  m.ramp_t1 = changes ? -1.0 : m.ramp_t0; // -1: set by the first advance
+}
+
+void CubeEngine::advance_to(double t_end)
+{
+  Impl &m = *impl_;
+  if (!m.has_control)
+    throw std::logic_error("CubeEngine::advance_to before begin_control");
+  Timer timer;
+  if (m.ramp_t1 < 0.0)
+    m.ramp_t1 = t_end;
+  m.interval_steps = m.interval_iterations = m.interval_cutbacks = 0;
+  const double dt_nominal = (t_end - m.time) / m.prm.steps_per_advance;
+  double dt = dt_nominal;
+  unsigned level = 0; // current number of halvings below the nominal step
+  while (m.time < t_end) {
+    const bool last = m.time + dt >= t_end - 1e-12 * std::abs(dt_nominal);
+    const double t = last ? t_end : m.time + dt;
+    if (m.solve_step(t)) {
+      m.commit();
+      m.time = t;
+      ++m.interval_steps;
+      ++m.stats.steps;
+      if (level > 0 && m.stats.last_step_iterations <= 4) {
+        dt *= 2.0;
+        --level;
+      }
+      continue;
+    }
+    m.revert();
+    ++m.interval_cutbacks;
+    ++m.stats.cutbacks;
+    if (++level > m.prm.max_cutbacks) {
+      std::ostringstream msg;
+      msg << "continuum cube: Newton did not converge at t = " << t << " after " << m.prm.max_cutbacks
+          << " cut-backs of the load step (last residuals:";
+      for (double r : m.stats.last_step_residuals)
+        msg << ' ' << r;
+      msg << ")";
+      throw std::runtime_error(msg.str());
+    }
+    dt *= 0.5;
+    m.pcout << "  cut back to dt = " << dt << '\n';
+  }
+  m.stats.total_seconds += timer.wall_time();
+}
+
+ResponseSample CubeEngine::measure()
+{
+  Impl &m = *impl_;
+  m.update_localization(m.time);
+  ResponseSample s;
+  s.time = m.time;
+  const Vector3 eps = m.face_strains();
+  const Tensor3 average = m.volume_average_stress();
+  s.strain = eps.asDiagonal();
+  s.stress = average;
+  for (int a = 0; a < 3; ++a)
+    s.stress(a, a) = m.committed_wall_stress[a];
+
+  double plastic_volume = 0.0, kappa_max = 0.0;
+  for (const auto &cell : m.tria.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &d : m.qp_data.get_data(cell)) {
+        if (d->old_region != ReturnRegion::elastic)
+          plastic_volume += d->JxW;
+        kappa_max = std::max(kappa_max, d->old_history.kappa);
+      }
+  if (m.prm.verbose) {
+    double kmin = 1e300, kweak = 0.0;
+    unsigned n_weak = 0;
+    for (const auto &cell : m.tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &d : m.qp_data.get_data(cell)) {
+          kmin = std::min(kmin, d->old_history.kappa);
+          if (d->weak) {
+            ++n_weak;
+            kweak = std::max(kweak, d->old_history.kappa);
+          }
+        }
+    m.pcout << "  t = " << m.time << " kappa min " << Utilities::MPI::min(kmin, m.comm) << " max " << Utilities::MPI::max(kappa_max, m.comm)
+            << " weak points " << Utilities::MPI::sum(n_weak, m.comm) << " kappa(weak) max " << Utilities::MPI::max(kweak, m.comm) << '\n';
+  }
+  plastic_volume = Utilities::MPI::sum(plastic_volume, m.comm);
+  kappa_max = Utilities::MPI::max(kappa_max, m.comm);
+
+  s.extras = {m.interval_steps ? double(m.interval_iterations) / m.interval_steps : 0.0,
+              double(m.interval_steps),
+              double(m.interval_cutbacks),
+              plastic_volume / std::pow(m.prm.side, 3),
+              kappa_max,
+              m.q_min,
+              m.onset_time,
+              m.onset_position[0],
+              m.onset_position[1],
+              m.onset_position[2],
+              m.onset_normal[0],
+              m.onset_normal[1],
+              m.onset_normal[2]};
+
+  if (!m.prm.output_directory.empty() && m.measure_count % m.prm.output_every == 0)
+    m.write_output(m.time);
+  ++m.measure_count;
+  return s;
+}
+
+namespace {
+struct PointSnapshot {
+  PlasticHistory history;
+  Vector6 stress;
+  ReturnRegion region;
+  Matrix6 tangent;
+  double q;
+  Vector3 normal;
+};
+struct CubeState : EngineState {
+  explicit CubeState(const LA::MPI::Vector &u, const LA::MPI::Vector &f)
+    : solution(u), internal_force(f)
+  {}
+  LA::MPI::Vector solution, internal_force;
+  std::vector<PointSnapshot> points; ///< locally owned cells in iteration order
+  double time, onset_time, q_min;
+  Vector3 wall_stress, onset_position, onset_normal;
+};
+} // namespace
+
+std::unique_ptr<EngineState> CubeEngine::save() const
+{
+  const Impl &m = *impl_;
+  auto s = std::make_unique<CubeState>(m.old_solution, m.internal_force);
+  for (const auto &cell : m.tria.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &d : m.qp_data.get_data(cell))
+        s->points.push_back({d->old_history, d->old_stress, d->old_region, d->trial.tangent, d->q, d->normal});
+  s->time = m.time;
+  s->onset_time = m.onset_time;
+  s->q_min = m.q_min;
+  s->wall_stress = m.committed_wall_stress;
+  s->onset_position = m.onset_position;
+  s->onset_normal = m.onset_normal;
+  return s;
+}
+
+void CubeEngine::restore(const EngineState &state)
+{
+  Impl &m = *impl_;
+  const auto &s = dynamic_cast<const CubeState &>(state);
+  std::size_t k = 0;
+  for (const auto &cell : m.tria.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const auto &d : m.qp_data.get_data(cell)) {
+        const PointSnapshot &p = s.points.at(k++);
+        d->old_history = d->trial.history = p.history;
+        d->old_stress = d->trial.stress = p.stress;
+        d->old_region = d->trial.region = p.region;
+        d->trial.tangent = p.tangent;
+        d->q = p.q;
+        d->normal = p.normal;
+      }
+  m.old_solution = s.solution;
+  m.solution_owned = s.solution;
+  m.solution = m.solution_owned;
+  m.internal_force = s.internal_force;
+  m.time = s.time;
+  m.onset_time = s.onset_time;
+  m.q_min = s.q_min;
+  m.committed_wall_stress = s.wall_stress;
+  m.onset_position = s.onset_position;
+  m.onset_normal = s.onset_normal;
+}
+
+} // namespace geocomp::continuum

@@ -1,0 +1,126 @@
+#pragma once
+// CubeEngine: the loading program played on a finite element cube (deal.II).
+//
+// The specimen is the cube [0, L]^3 between six rigid, frictionless walls, exactly the
+// DEM box: the walls x = 0, y = 0, z = 0 stay where they are (zero normal displacement,
+// tangential sliding free) and the walls x = L, y = L, z = L follow the StageControl:
+//   - kinematic axis a:  u_a = eps_a(t) L on the face x_a = L  (a frictionless platen;
+//                        S0 eq. (3) included, it is just a prescribed eps_a(t)),
+//   - stress axis a:     traction t = sigma*_a(t) e_a on the face x_a = L (a flexible
+//                        membrane, as a servo wall in the limit of fast servo).
+// The three fixed walls remove the rigid modes, so an all-stress stage is well posed.
+//
+// Equilibrium, small strain, rate-independent elastoplasticity:
+//     R(u) = int_Omega B^T sigma(eps(u); history) dV - int_Gamma_t N^T t dA = 0,
+// solved per load step by Newton-Raphson with the consistent tangent
+//     K = int_Omega B^T C_alg B dV,   K du = -R,   u <- u + alpha du,
+// where the first iteration of a step carries the increment of the prescribed wall
+// displacements as inhomogeneous constraints (a tangent predictor, exact for elasticity),
+// and alpha comes from a backtracking line search on |R|. A step that does not converge in
+// `max_newton_iterations` is cut back (halved) from the last converged state; steps grow
+// again after easy convergence. History lives per quadrature point (CellDataStorage):
+// the converged state and the trial state of the current iteration, committed only after
+// convergence, so cut-backs and the engine's save()/restore() are exact.
+//
+// Response. Wall stress sigma_aa = (sum of the internal nodal forces in direction a on the
+// face x_a = L) / L^2, i.e. reaction over the INITIAL face area: the model is small-strain,
+// where force/initial area is the work-conjugate of the engineering strain and a
+// homogeneous cube then reproduces the material point exactly. Box strain eps_aa = mean
+// normal displacement of the face x_a = L over L (exact on kinematic faces, the average of
+// a possibly warped face on stress faces). Off-diagonal stress = volume average (zero up
+// to round-off between frictionless walls); off-diagonal box strain = 0.
+//
+// Softening and localization: an imperfection (a sphere of quadrature points with reduced
+// cohesion) triggers the band, and the softening branch is regularized by the crack-band
+// method (the kappa-extent of softening scaled by l_ref / h_e, h_e the element size;
+// docs/continuum-fe.md). Each plastic quadrature point carries Rice's indicator
+// q = min_n det(n.C_alg.n)/det(n.C_e.n); the first q <= 0 (time, place, band normal) is
+// recorded in the Response extras.
+#include "common/LoadingEngine.h"
+#include "continuum/driver/Materials.h"
+
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+
+namespace geocomp::continuum {
+
+/// Parameters of the FE cube (the lead declares them in the case file).
+struct CubeParameters {
+  // Geometry and discretization.
+  double side = 1.0;              ///< L [m] > 0
+  unsigned cells_per_side = 8;    ///< n >= 1: n^3 hexahedra
+  unsigned degree = 1;            ///< FE_Q degree, 1..3
+  // Linear solver (Trilinos or PETSc, chosen when configuring; docs/continuum-fe.md).
+  std::string linear_solver = "gmres";  ///< gmres | cg (symmetric tangents only) | direct
+  std::string preconditioner = "amg";   ///< amg (ML or BoomerAMG) | jacobi
+  double linear_tolerance = 1e-10;  ///< relative residual of the Krylov solve
+  unsigned max_linear_iterations = 5000;
+  // Newton and load stepping.
+  double newton_tolerance = 1e-9;   ///< |R_free| <= tol * max(|F_int|, |F_ext|)
+  unsigned max_newton_iterations = 15;
+  unsigned line_search_steps = 6;   ///< halvings of the Newton step (0 = full steps)
+  unsigned steps_per_advance = 2;   ///< load steps per sample interval (initial size)
+  unsigned max_cutbacks = 10;       ///< halvings of a load step before giving up
+  double initial_stress = 0.0;      ///< isotropic initial stress [Pa], tension positive
+  // Imperfection: quadrature points inside the sphere get a reduced cohesion.
+  Vector3 imperfection_centre = Vector3(0.5, 0.5, 0.5); ///< [m]
+  double imperfection_radius = 0.0; ///< [m] >= 0; 0 = no imperfection
+  double imperfection_cohesion_factor = 0.9; ///< (0, 1]
+  // Regularization of softening.
+  std::string regularization = "crack-band"; ///< crack-band | none
+  /// Width over which the softening law was measured/calibrated [m] (crack band l_ref):
+  /// softening kappa-extents are scaled by l_ref / h_e, h_e = cube root of the cell volume.
+  /// 0 = the side L (the law describes the whole specimen, as a material-point calibration).
+  double band_reference_width = 0.0;
+  // Localization indicator.
+  unsigned localization_directions = 200; ///< coarse scan points on the hemisphere, >= 10
+  /// Fraction of the elastic stiffness added to the tangent (matrix only, not the stress)
+  /// at apex returns, whose perfect-plastic tangent is singular.
+  double apex_tangent_fraction = 1e-3;
+  // Output: VTU/PVTU per sample + a PVD index; empty directory = no output.
+  std::string output_directory;
+  std::string output_basename = "cube";
+  unsigned output_every = 1;  ///< write every k-th measured sample
+  bool verbose = false;       ///< Newton log on rank 0
+};
+
+/// Counters of the last advance_to (and totals), for benchmarks and tests.
+struct CubeStatistics {
+  unsigned steps = 0;             ///< converged load steps, total
+  unsigned newton_iterations = 0; ///< Newton iterations in converged steps, total
+  unsigned cutbacks = 0;          ///< total
+  unsigned linear_iterations = 0; ///< total Krylov iterations
+  double assembly_seconds = 0.0, solve_seconds = 0.0, total_seconds = 0.0;
+  /// Residual history |R|/scale of the last converged step (for convergence-rate tests).
+  std::vector<double> last_step_residuals;
+  unsigned last_step_iterations = 0;
+};
+
+class CubeEngine : public LoadingEngine {
+public:
+  CubeEngine(const CubeParameters &parameters, std::shared_ptr<const MaterialFactory> material,
+             MPI_Comm communicator);
+  CubeEngine(const CubeParameters &parameters, const MaterialParameters &material, MPI_Comm communicator);
+  ~CubeEngine() override;
+
+  std::string name() const override { return "continuum-fe"; }
+  std::vector<ExtraColumn> extra_columns() const override;
+  void begin_control(const StageControl &control) override;
+  void advance_to(double t_end) override;
+  ResponseSample measure() override;
+  std::unique_ptr<EngineState> save() const override;
+  void restore(const EngineState &state) override;
+
+  const CubeStatistics &statistics() const;
+  unsigned n_dofs() const;
+  /// Element size h_e used by the crack band [m].
+  double element_size() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace geocomp::continuum

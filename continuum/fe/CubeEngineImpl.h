@@ -1,0 +1,146 @@
+#pragma once
+// Internal: the deal.II state of CubeEngine, shared by its two translation units
+// (CubeEngine.cpp: setup, assembly, Newton, measurement; CubeOutput.cpp: VTU/PVD output).
+// Not installed; include only from continuum/fe/*.cpp.
+#include "continuum/fe/CubeEngine.h"
+#include "continuum/models/AcousticTensorScan.h"
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/quadrature_point_data.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/generic_linear_algebra.h>
+
+// Linear algebra, chosen at configure time (CMake GEOCOMP_CUBE_LINEAR_ALGEBRA):
+// Trilinos (Epetra + ML algebraic multigrid with the rigid translations as near-null
+// space; the default, see docs/continuum-fe.md for the timings) or PETSc (BoomerAMG).
+#if defined(GEOCOMP_CUBE_USE_PETSC)
+namespace geocomp::continuum {
+namespace LA = dealii::LinearAlgebraPETSc;
+}
+#else
+namespace geocomp::continuum {
+namespace LA = dealii::LinearAlgebraTrilinos;
+}
+#endif
+
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace geocomp::continuum {
+
+namespace dl = dealii;
+
+/// History and trial state of one quadrature point.
+struct QuadraturePointData {
+  // Converged at the end of the last committed load step.
+  PlasticHistory old_history;
+  Vector6 old_stress = Vector6::Zero();
+  ReturnRegion old_region = ReturnRegion::elastic;
+  // Trial values of the current Newton iterate (committed on convergence); after a
+  // commit, trial.tangent is the consistent tangent of the converged state.
+  MaterialPointUpdate trial;
+  // Geometry and material of the point.
+  const ConstitutiveModel *material = nullptr;
+  bool weak = false;    ///< inside the imperfection
+  double JxW = 0.0;     ///< quadrature weight times Jacobian
+  Vector3 position = Vector3::Zero();
+  // Localization indicator at the last committed state.
+  double q = 1.0;
+  Vector3 normal = Vector3::Zero();
+};
+
+struct CubeEngine::Impl {
+  using Cell = dl::Triangulation<3>::cell_iterator;
+
+  Impl(const CubeParameters &prm, std::shared_ptr<const MaterialFactory> factory, MPI_Comm comm);
+
+  // ---- setup (CubeEngine.cpp)
+  void make_mesh_and_dofs();
+  void setup_quadrature_data();
+  void build_constraints(); ///< homogeneous constraints of the current control
+
+  // ---- load stepping
+  double target_stress(int axis, double t) const;
+  bool solve_step(double t);  ///< Newton for the load step to time t; false: cut back
+  /// Evaluates every quadrature point at `solution` and assembles the residual (free
+  /// rows), the unconstrained internal force, and if `matrix` the tangent. With
+  /// `predictor` the inhomogeneous predictor constraints are used for the matrix rows.
+  /// Returns |R_free|.
+  double assemble(double t, bool matrix, bool predictor);
+  unsigned solve_linear(double reduction); ///< K du = rhs to a relative reduction; iterations
+  void commit();
+  void revert();
+  void update_localization(double t);
+
+  // ---- measurement
+  Vector3 wall_stresses() const;       ///< from the internal-force reactions
+  Vector3 face_strains() const;        ///< mean normal displacement / L
+  Tensor3 volume_average_stress() const;
+
+  // ---- output (CubeOutput.cpp)
+  void write_output(double time);
+
+  MPI_Comm comm;
+  CubeParameters prm;
+  std::shared_ptr<const MaterialFactory> factory;
+  dl::ConditionalOStream pcout;
+
+  dl::parallel::distributed::Triangulation<3> tria;
+  dl::FESystem<3> fe;
+  dl::DoFHandler<3> dof_handler;
+  dl::QGauss<3> quadrature;
+  dl::QGauss<2> face_quadrature;
+  dl::IndexSet owned, relevant;
+  double h_e = 0.0; ///< element size (cube root of the cell volume)
+
+  /// Dofs of component a on the face x_a = L (boundary id 2a+1), locally relevant.
+  std::array<dl::IndexSet, 3> top_face_dofs;
+  std::array<dl::IndexSet, 3> bottom_face_dofs;
+  dl::AffineConstraints<double> constraints;           ///< homogeneous, current control
+  dl::AffineConstraints<double> predictor_constraints; ///< with the step's wall increments
+
+  LA::MPI::SparseMatrix matrix;
+  std::vector<std::vector<bool>> constant_modes; ///< rigid translations, for ML
+  LA::MPI::Vector solution;        ///< ghosted current iterate
+  LA::MPI::Vector solution_owned;  ///< same, owned entries
+  LA::MPI::Vector old_solution;    ///< owned, last committed
+  LA::MPI::Vector rhs;             ///< -R (free rows)
+  LA::MPI::Vector internal_force;  ///< unconstrained int B^T sigma
+  LA::MPI::Vector update;          ///< Newton update (owned)
+  double residual_scale = 0.0; ///< max(|F_int|, |F_ext|) of the last assembly
+
+  dl::CellDataStorage<Cell, QuadraturePointData> qp_data;
+  std::map<MaterialVariant, std::shared_ptr<const ConstitutiveModel>> materials;
+  Matrix6 elastic_tangent;
+  Vector6 prestrain = Vector6::Zero(); ///< elastic strain of the initial stress
+  AcousticTensorScan scan;
+
+  // Control and time.
+  StageControl control;
+  bool has_control = false;
+  double time = 0.0;
+  Vector3 ramp_from = Vector3::Zero();
+  double ramp_t0 = 0.0, ramp_t1 = -1.0;
+  Vector3 committed_wall_stress = Vector3::Zero();
+
+  // Localization onset.
+  double onset_time = -1.0;
+  Vector3 onset_position = Vector3::Zero(), onset_normal = Vector3::Zero();
+  double q_min = 1.0;
+
+  // Statistics.
+  CubeStatistics stats;
+  unsigned interval_steps = 0, interval_iterations = 0, interval_cutbacks = 0;
+
+  // Output bookkeeping.
+  unsigned measure_count = 0, output_count = 0;
+  std::vector<std::pair<double, std::string>> pvd_records;
+};
+
+} // namespace geocomp::continuum

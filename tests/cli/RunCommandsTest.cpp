@@ -1,0 +1,83 @@
+// End-to-end runs of the command line on small cases: results files, reuse, reports,
+// and the MPI sweep.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+fs::path source_dir() { return fs::path(std::getenv("GEOCOMP_SOURCE_DIR") ? std::getenv("GEOCOMP_SOURCE_DIR") : "."); }
+
+int run(const std::string &cmd)
+{
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string read(const fs::path &p)
+{
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// The demo case with the given engines, writing into `dir`.
+fs::path make_case(const fs::path &dir, const std::string &name, const std::string &engines, int seed)
+{
+  std::string text = read(source_dir() / "cases/demo.prm");
+  text = std::regex_replace(text, std::regex("set engines = [^\n]*"), "set engines = " + engines);
+  text = std::regex_replace(text, std::regex("set directory = [^\n]*"), "set directory = " + (dir / name).string());
+  text = std::regex_replace(text, std::regex("set seed    = [^\n]*"), "set seed = " + std::to_string(seed));
+  const fs::path file = dir / (name + ".prm");
+  std::ofstream(file) << text;
+  return file;
+}
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("geocomp-run-" + std::to_string(::getpid()));
+  Scratch() { fs::create_directories(dir); }
+  ~Scratch() { fs::remove_all(dir); }
+};
+} // namespace
+
+TEST(PairCommand, WritesResultsAndReportThenReusesThem)
+{
+  Scratch s;
+  const fs::path c = make_case(s.dir, "mp", "material-point", 1);
+  const std::string exe = std::string("'") + GEOCOMP_EXE + "' ";
+  ASSERT_EQ(run(exe + "pair '" + c.string() + "' > '" + (s.dir / "out1").string() + "' 2>&1"), 0)
+    << read(s.dir / "out1");
+  EXPECT_TRUE(fs::exists(s.dir / "mp/material-point.h5"));
+  EXPECT_TRUE(fs::exists(s.dir / "mp/report/index.html"));
+  EXPECT_NE(read(s.dir / "mp/report/metrics.json").find("rudnicki_rice"), std::string::npos);
+  // The second run finds the results up to date.
+  ASSERT_EQ(run(exe + "pair '" + c.string() + "' > '" + (s.dir / "out2").string() + "' 2>&1"), 0);
+  EXPECT_NE(read(s.dir / "out2").find("up-to-date results reused"), std::string::npos) << read(s.dir / "out2");
+  // No temporary files are left in the results folder.
+  for (const auto &e : fs::directory_iterator(s.dir / "mp"))
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+TEST(SweepCommand, SpreadsCasesOverTwoRanks)
+{
+  Scratch s;
+  std::string cases;
+  for (int k = 0; k < 3; ++k)
+    cases += " '" + make_case(s.dir, "c" + std::to_string(k), "material-point", k + 1).string() + "'";
+  const std::string cmd = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 --oversubscribe '" +
+                          std::string(GEOCOMP_EXE) + "' sweep" + cases + " > '" + (s.dir / "out").string() + "' 2>&1";
+  ASSERT_EQ(run(cmd), 0) << read(s.dir / "out");
+  const std::string out = read(s.dir / "out");
+  EXPECT_NE(out.find("rank 0 case " + (s.dir / "c0.prm").string() + ": done"), std::string::npos) << out;
+  EXPECT_NE(out.find("rank 1 case " + (s.dir / "c1.prm").string() + ": done"), std::string::npos) << out;
+  EXPECT_NE(out.find("rank 0 case " + (s.dir / "c2.prm").string() + ": done"), std::string::npos) << out;
+  for (int k = 0; k < 3; ++k)
+    EXPECT_TRUE(fs::exists(s.dir / ("c" + std::to_string(k)) / "material-point.h5"));
+}

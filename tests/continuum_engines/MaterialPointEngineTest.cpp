@@ -1,0 +1,138 @@
+// The material-point engine under the ProgramRunner: mixed control (stress axes solved by
+// Newton with the consistent tangent), S0's isochoric program, and exact save/restore.
+#include "EngineTestSupport.h"
+
+#include "common/ProgramRunner.h"
+#include "continuum/driver/MaterialPointEngine.h"
+#include "continuum/models/MohrCoulombModel.h"
+
+#include <gtest/gtest.h>
+
+using namespace geocomp;
+using namespace geocomp::continuum;
+using namespace geocomp::continuum::testing;
+
+namespace {
+const double E = 1.0e9, nu = 0.25, c = 50e3, phi = deg(30), psi = deg(10), p = 1.0e6;
+
+std::shared_ptr<const ConstitutiveModel> perfect_material()
+{
+  return std::make_shared<MohrCoulombModel>(perfect_mohr_coulomb(E, nu, c, phi, psi));
+}
+
+LoadingProgram triaxial_program()
+{
+  LoadingProgram program;
+  program.sample_interval = 0.05;
+  program.stages = {isotropic_stage(p, 0.2), triaxial_stage(p, 1e-3, 0.01)};
+  program.validate();
+  return program;
+}
+} // namespace
+
+TEST(MaterialPointEngine, TriaxialPeakEqualsMohrCoulombClosedForm)
+{
+  MaterialPointEngine engine(perfect_material());
+  const LoadingProgram program = triaxial_program();
+  const Response r = ProgramRunner(program, engine).run();
+
+  // Compression positive: sigma_1 = sigma_3 N_phi + 2 c sqrt(N_phi); tension positive
+  // sigma_zz = -(p N_phi + 2 c sqrt(N_phi)).
+  const double peak = -(p * N_of(phi) + 2.0 * c * std::sqrt(N_of(phi)));
+  double lowest = 0.0;
+  for (const auto &s : r.samples)
+    lowest = std::min(lowest, s.stress(2, 2));
+  EXPECT_NEAR(lowest / peak, 1.0, 1e-8);
+  // It reached the peak plateau well before the end, on the compression corner.
+  EXPECT_NEAR(r.samples.back().stress(2, 2) / peak, 1.0, 1e-8);
+  // Plastic, and symmetric: the corner sigma_xx = sigma_yy leaves the lateral split
+  // indeterminate, the engine must keep eps_xx = eps_yy.
+  EXPECT_NE(r.samples.back().extras[r.extra_index("state_flag")], 0.0);
+  for (const auto &s : r.samples)
+    EXPECT_NEAR(s.strain(0, 0), s.strain(1, 1), 1e-14) << "t = " << s.time;
+  EXPECT_EQ(r.stage_end_reasons[1], program.stages[1].stop_any[0].text);
+}
+
+TEST(MaterialPointEngine, StressAxesHoldTheirTargets)
+{
+  MaterialPointEngine engine(perfect_material());
+  const Response r = ProgramRunner(triaxial_program(), engine).run();
+  int checked = 0;
+  for (const auto &s : r.samples) {
+    if (s.time < 0.05 + 1e-12) // the first interval ramps the targets from zero
+      continue;
+    EXPECT_NEAR(s.stress(0, 0) / -p, 1.0, 1e-8) << "t = " << s.time;
+    EXPECT_NEAR(s.stress(1, 1) / -p, 1.0, 1e-8) << "t = " << s.time;
+    if (s.stage == 0)
+      EXPECT_NEAR(s.stress(2, 2) / -p, 1.0, 1e-8);
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
+}
+
+TEST(MaterialPointEngine, ElasticConsolidationMatchesBulkModulus)
+{
+  MaterialPointEngine engine(perfect_material());
+  LoadingProgram program;
+  program.sample_interval = 0.1;
+  program.stages = {isotropic_stage(p, 0.5)};
+  const Response r = ProgramRunner(program, engine).run();
+  const double K = E / (3.0 * (1.0 - 2.0 * nu));
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(r.samples.back().strain(a, a) / (-p / (3.0 * K)), 1.0, 1e-10);
+}
+
+TEST(MaterialPointEngine, IsochoricProgramKeepsTheVolumeAndReachesItsStop)
+{
+  MaterialPointEngine engine(perfect_material());
+  LoadingProgram program;
+  program.sample_interval = 0.1;
+  Stage shear;
+  shear.name = "isochoric";
+  shear.isochoric = true;
+  shear.lambda = 0.0;
+  shear.isochoric_rate = 0.01;
+  shear.stop_any = {parse_condition("gamma_max >= 0.05", "test")};
+  shear.max_duration = 100.0;
+  program.stages = {isotropic_stage(p, 1.0), shear};
+  program.validate();
+  const Response r = ProgramRunner(program, engine).run();
+  ASSERT_EQ(r.stage_end_reasons[1], "gamma_max >= 0.05");
+  std::vector<const ResponseSample *> stage2;
+  for (const auto &s : r.samples)
+    if (s.stage == 1)
+      stage2.push_back(&s);
+  ASSERT_GT(stage2.size(), 5u);
+  const double v0 = volumetric_strain(r.samples[stage2.front() - r.samples.data() - 1].strain);
+  for (const ResponseSample *s : stage2) {
+    EXPECT_NEAR(volumetric_strain(s->strain), v0, 1e-12);
+    EXPECT_NEAR(s->strain(1, 1), stage2.front()->strain(1, 1), 1e-15); // lambda = 0
+  }
+  // Plastic at the end, and with psi > 0 at constant volume the mean pressure has grown.
+  EXPECT_NE(stage2.back()->extras[r.extra_index("state_flag")], 0.0);
+  EXPECT_LT(mean_stress(stage2.back()->stress), -1.05 * p);
+}
+
+TEST(MaterialPointEngine, UnloadingBranchLeavesTheMainPathUnchanged)
+{
+  // Hardening material so the branch starts from a state with history.
+  MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, c, phi, psi);
+  m.cohesion = PiecewiseLinear({0.0, 0.004, 0.02}, {c, 2.0 * c, 0.5 * c});
+  auto material = std::make_shared<MohrCoulombModel>(m);
+  LoadingProgram plain = triaxial_program();
+  LoadingProgram branched = plain;
+  branched.stages[1].unload_at = {parse_trigger("eps_zz <= -0.004", "test")};
+
+  MaterialPointEngine a(material), b(material);
+  const Response ra = ProgramRunner(plain, a).run();
+  const Response rb = ProgramRunner(branched, b).run();
+  ASSERT_EQ(rb.branches.size(), 1u);
+  EXPECT_TRUE(rb.branches[0].reached_target);
+  EXPECT_GT(rb.branches[0].residual_gamma, 1e-4); // plastic strain survives unloading
+  const auto main_a = ra.path(0), main_b = rb.path(0);
+  ASSERT_EQ(main_a.size(), main_b.size());
+  for (std::size_t k = 0; k < main_a.size(); ++k) {
+    EXPECT_EQ(main_a[k]->stress, main_b[k]->stress) << "sample " << k;
+    EXPECT_EQ(main_a[k]->strain, main_b[k]->strain) << "sample " << k;
+  }
+}
