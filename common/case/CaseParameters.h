@@ -84,7 +84,12 @@ struct ContinuumParameters {
   double imperfection_factor = 0.9;     ///< cohesion multiplier inside it
   std::vector<double> imperfection_centre{0.5, 0.5, 0.5}; ///< relative to L0
   std::string regularization = "crack-band"; ///< crack-band | none
-  double reference_element_size = 0.0;  ///< [m] for crack-band; 0 = L0/cells_per_edge at the coarsest
+  std::string linear_solver = "gmres";  ///< gmres | cg | direct
+  std::string preconditioner = "boomeramg"; ///< boomeramg | jacobi
+  double newton_tolerance = 1e-9;
+  unsigned int load_steps_per_sample = 2;
+  unsigned int point_substeps = 20;     ///< material-point increments per sample
+  double reference_element_size = 0.0;  ///< [m] crack-band reference width; 0 = the cube edge L0
 };
 
 struct OutputParameters {

@@ -105,10 +105,22 @@ void declare_continuum(dealii::ParameterHandler &prm)
   prm.declare_entry("imperfection factor", "0.9", Double(0.01, 1.0), "Cohesion multiplier inside the weaker zone.");
   prm.declare_entry("imperfection centre", "0.5, 0.5, 0.5", List(Double(0, 1), 3, 3),
                     "Centre of the weaker zone, as fractions of L0.");
+  prm.declare_entry("linear solver", "gmres", Selection("gmres|cg|direct"),
+                    "PETSc solver of the Newton systems (direct = MUMPS).");
+  prm.declare_entry("preconditioner", "boomeramg", Selection("boomeramg|jacobi"),
+                    "Preconditioner of the Krylov solvers (boomeramg: Hypre algebraic multigrid).");
+  prm.declare_entry("newton tolerance", "1e-9", Double(1e-14, 1e-2),
+                    "Newton converges when |R_free| <= tolerance * max(|F_int|, |F_ext|).");
+  prm.declare_entry("load steps per sample", "2", Integer(1, 10000),
+                    "Initial load steps per sampling interval (halved on non-convergence).");
+  prm.declare_entry("point substeps per sample", "20", Integer(1, 100000),
+                    "Load increments per sampling interval of the material-point engine.");
   prm.declare_entry("regularization", "crack-band", Selection("crack-band|none"),
                     "Softening regularization: scale the softening by element size (crack band) or none.");
   prm.declare_entry("reference element size", "0", Double(0, 1e3),
-                    "Element size [m] at which the softening table holds as written; 0 = L0 / 4.");
+                    "Crack-band reference width [m]: the softening table holds as written for elements of this size "
+                    "and is stretched by width/h_e elsewhere; 0 = the cube edge L0 (the table describes the whole "
+                    "specimen, as a material-point calibration from DEM does).");
   prm.leave_subsection();
 }
 
@@ -163,6 +175,11 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   p.imperfection_centre = dealii::Utilities::string_to_double(
     dealii::Utilities::split_string_list(prm.get("imperfection centre")));
   p.regularization = prm.get("regularization");
+  p.linear_solver = prm.get("linear solver");
+  p.preconditioner = prm.get("preconditioner");
+  p.newton_tolerance = prm.get_double("newton tolerance");
+  p.load_steps_per_sample = prm.get_integer("load steps per sample");
+  p.point_substeps = prm.get_integer("point substeps per sample");
   p.reference_element_size = prm.get_double("reference element size");
   prm.leave_subsection();
   for (const auto &[k, c] : p.cohesion.points)

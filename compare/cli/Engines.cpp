@@ -64,6 +64,7 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
   if (name == "material-point") {
     continuum::MaterialPointParameters p;
     p.initial_stress = initial_stress;
+    p.substeps_per_advance = c.continuum.point_substeps;
     return std::make_unique<continuum::MaterialPointEngine>(continuum_material(c), p);
   }
   if (name == "continuum") {
@@ -77,6 +78,10 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
     for (int a = 0; a < 3; ++a)
       p.imperfection_centre[a] = c.continuum.imperfection_centre[a] * p.side;
     p.regularization = c.continuum.regularization;
+    p.linear_solver = c.continuum.linear_solver;
+    p.preconditioner = c.continuum.preconditioner;
+    p.newton_tolerance = c.continuum.newton_tolerance;
+    p.steps_per_advance = c.continuum.load_steps_per_sample;
     p.band_reference_width = c.continuum.reference_element_size;
     if (c.output.fields)
       p.output_directory = output_dir + "/continuum-fields";
