@@ -83,9 +83,9 @@ struct ContinuumParameters {
   double imperfection_radius = 0.0;     ///< [m]; 0 = none
   double imperfection_factor = 0.9;     ///< cohesion multiplier inside it
   std::vector<double> imperfection_centre{0.5, 0.5, 0.5}; ///< relative to L0
-  std::string regularization = "crack-band"; ///< crack-band | none
+  std::string regularization = "none"; ///< crack-band | none
   std::string linear_solver = "gmres";  ///< gmres | cg | direct
-  std::string preconditioner = "boomeramg"; ///< boomeramg | jacobi
+  std::string preconditioner = "amg";  ///< amg | jacobi
   double newton_tolerance = 1e-9;
   unsigned int load_steps_per_sample = 2;
   unsigned int point_substeps = 20;     ///< material-point increments per sample

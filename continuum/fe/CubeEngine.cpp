@@ -58,8 +58,9 @@ void check_parameters(const CubeParameters &p)
     fail("degree", "must be 1, 2 or 3");
   if (p.linear_solver != "gmres" && p.linear_solver != "cg" && p.linear_solver != "direct")
     fail("linear solver", "must be gmres, cg or direct");
-  if (p.preconditioner != "amg" && p.preconditioner != "jacobi")
-    fail("preconditioner", "must be amg or jacobi");
+  if (p.preconditioner != "amg" && p.preconditioner != "boomeramg" && p.preconditioner != "ml" &&
+      p.preconditioner != "jacobi")
+    fail("preconditioner", "must be amg (aliases: boomeramg, ml) or jacobi");
   if (!(p.linear_tolerance > 0.0 && p.linear_tolerance < 1.0))
     fail("linear tolerance", "must be in (0, 1)");
   if (!(p.newton_tolerance > 0.0 && p.newton_tolerance < 1.0))
@@ -349,7 +350,7 @@ unsigned CubeEngine::Impl::solve_linear(double reduction)
     solver.solve(matrix, update, rhs);
   } else {
     std::unique_ptr<PETScWrappers::PreconditionBase> preconditioner;
-    if (prm.preconditioner == "amg") {
+    if (prm.preconditioner != "jacobi") {
       PETScWrappers::PreconditionBoomerAMG::AdditionalData data;
       data.symmetric_operator = prm.linear_solver == "cg";
       data.strong_threshold = 0.7; // measured best for this 3-component problem (docs)
@@ -372,7 +373,7 @@ unsigned CubeEngine::Impl::solve_linear(double reduction)
     solver.solve(matrix, update, rhs);
   } else {
     std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
-    if (prm.preconditioner == "amg") {
+    if (prm.preconditioner != "jacobi") {
       // ML smoothed aggregation with the three rigid translations as near-null space.
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic = true;

@@ -54,7 +54,9 @@ struct CubeParameters {
   unsigned degree = 1;            ///< FE_Q degree, 1..3
   // Linear solver (Trilinos or PETSc, chosen when configuring; docs/continuum-fe.md).
   std::string linear_solver = "gmres";  ///< gmres | cg (symmetric tangents only) | direct
-  std::string preconditioner = "amg";   ///< amg (ML or BoomerAMG) | jacobi
+  /// amg | jacobi. amg = the AMG of the configured linear algebra (ML with Trilinos,
+  /// BoomerAMG with PETSc); "boomeramg" and "ml" are accepted as aliases of amg.
+  std::string preconditioner = "amg";
   double linear_tolerance = 1e-10;  ///< relative residual of the Krylov solve
   unsigned max_linear_iterations = 5000;
   // Newton and load stepping.
