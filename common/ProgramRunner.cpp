@@ -200,17 +200,36 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
   engine_.begin_control(reverse);
 
   double t = origin.time;
+  double tau_prev = b.tau_start;
   const double t_end = origin.time + stage.max_duration;
   while (true) {
     const double t_next = std::min(t + program_.sample_interval, t_end);
+    const std::unique_ptr<EngineState> before = engine_.save();
     engine_.advance_to(t_next);
-    t = t_next;
     ResponseSample s = engine_.measure();
-    const double tau = along(s.stress);
+    double tau = along(s.stress);
+    if (tau <= b.tau_target && tau < tau_prev) {
+      // The target lies inside this interval: land the branch's last sample on it. Secant
+      // steps in time from the saved state (exact for elastic unloading, which is linear).
+      double ta = t, fa = tau_prev - b.tau_target, tb = t_next, fb = tau - b.tau_target;
+      for (int k = 0; k < 3 && std::abs(fb) > 1e-9 * std::max(1.0, std::abs(b.tau_start)) && fa != fb; ++k) {
+        const double tc = std::clamp(tb - fb * (tb - ta) / (fb - fa), t, t_next);
+        engine_.restore(*before);
+        engine_.advance_to(tc);
+        s = engine_.measure();
+        ta = tb;
+        fa = fb;
+        tb = tc;
+        fb = along(s.stress) - b.tau_target;
+      }
+      tau = along(s.stress);
+    }
+    t = s.time;
+    tau_prev = tau;
     const double fraction =
       b.tau_start > b.tau_target ? (b.tau_start - tau) / (b.tau_start - b.tau_target) : 1.0;
     record(s, stage_index, b.id, fraction);
-    if (tau <= b.tau_target) {
+    if (tau <= b.tau_target + 1e-9 * std::max(1.0, std::abs(b.tau_start))) {
       b.reached_target = true;
       break;
     }
