@@ -1,5 +1,6 @@
 #include "dem/DemSystem.h"
 
+#include "dem/BinaryState.h"
 #include "dem/ContactKinematics.h"
 #include "dem/TimeStep.h"
 
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 namespace geocomp::dem {
 
@@ -552,6 +554,104 @@ EnergyLedger DemSystem::energy() const
     },
     model_);
   return e;
+}
+
+// @sect4{Checkpoint state}
+//
+// Everything the next step reads is written, in storage order, as raw bytes (see
+// BinaryState.h): then a system read back computes the same bits as the original. The
+// law is a variant of trivially copyable parameter structs and is stored as its bytes.
+
+void DemSystem::write_state(std::ostream& out) const
+{
+  static_assert(std::is_trivially_copyable_v<ContactModel>, "ContactModel is stored as its bytes");
+  binary::put_tag(out, "DEMSYSTM", 1);
+  binary::put<std::uint64_t>(out, sizeof(ContactModel));
+  binary::put(out, model_);
+  const ParticleStore& p = store_;
+  binary::put_vector(out, p.x);
+  binary::put_vector(out, p.v);
+  binary::put_vector(out, p.omega);
+  binary::put_vector(out, p.force);
+  binary::put_vector(out, p.torque);
+  binary::put_vector(out, p.orientation);
+  binary::put_vector(out, p.radius);
+  binary::put_vector(out, p.mass);
+  binary::put_vector(out, p.inv_mass);
+  binary::put_vector(out, p.inv_inertia);
+  binary::put_vector(out, p.id);
+  binary::put_vector(out, p.body);
+  binary::put_vector(out, p.flags);
+  binary::put_vector(out, index_of_);
+  binary::put_vector(out, walls_);
+  binary::put(out, mu_);
+  search_.write_state(out);
+  binary::put_vector(out, lists_.pairs);
+  binary::put_vector(out, lists_.incident_offset);
+  binary::put_vector(out, lists_.incident);
+  binary::put_vector(out, lists_.walls);
+  binary::put_vector(out, lists_.wall_offset);
+  binary::put(out, dt_);
+  binary::put(out, threads_);
+  binary::put(out, gravity_);
+  binary::put(out, local_damping_);
+  binary::put(out, track_energy_);
+  binary::put(out, ready_);
+  binary::put(out, rebuild_requested_);
+  binary::put(out, time_);
+  binary::put(out, steps_);
+  binary::put(out, losses_);
+  binary::put_vector(out, wall_force_old_);
+  if (!out) throw binary::StateError("DemSystem::write_state: write failed");
+}
+
+void DemSystem::read_state(std::istream& in)
+{
+  binary::expect_tag(in, "DEMSYSTM", 1);
+  std::uint64_t model_size = 0;
+  binary::get(in, model_size);
+  if (model_size != sizeof(ContactModel)) throw binary::StateError("checkpoint: contact law written by another build");
+  binary::get(in, model_);
+  ParticleStore& p = store_;
+  binary::get_vector(in, p.x);
+  binary::get_vector(in, p.v);
+  binary::get_vector(in, p.omega);
+  binary::get_vector(in, p.force);
+  binary::get_vector(in, p.torque);
+  binary::get_vector(in, p.orientation);
+  binary::get_vector(in, p.radius);
+  binary::get_vector(in, p.mass);
+  binary::get_vector(in, p.inv_mass);
+  binary::get_vector(in, p.inv_inertia);
+  binary::get_vector(in, p.id);
+  binary::get_vector(in, p.body);
+  binary::get_vector(in, p.flags);
+  const std::size_t n = p.x.size();
+  for (std::size_t a : {p.v.size(), p.omega.size(), p.force.size(), p.torque.size(), p.orientation.size(),
+                        p.radius.size(), p.mass.size(), p.inv_mass.size(), p.inv_inertia.size(), p.id.size(),
+                        p.body.size(), p.flags.size()})
+    if (a != n) throw binary::StateError("checkpoint: particle arrays of different lengths");
+  binary::get_vector(in, index_of_);
+  binary::get_vector(in, walls_);
+  binary::get(in, mu_);
+  search_.read_state(in);
+  binary::get_vector(in, lists_.pairs);
+  binary::get_vector(in, lists_.incident_offset);
+  binary::get_vector(in, lists_.incident);
+  binary::get_vector(in, lists_.walls);
+  binary::get_vector(in, lists_.wall_offset);
+  binary::get(in, dt_);
+  binary::get(in, threads_);
+  binary::get(in, gravity_);
+  binary::get(in, local_damping_);
+  binary::get(in, track_energy_);
+  binary::get(in, ready_);
+  binary::get(in, rebuild_requested_);
+  binary::get(in, time_);
+  binary::get(in, steps_);
+  binary::get(in, losses_);
+  binary::get_vector(in, wall_force_old_);
+  block_losses_.clear();
 }
 
 std::size_t DemSystem::memory_bytes() const

@@ -37,6 +37,7 @@
 #include "dem/PlaneWall.h"
 
 #include <cstdint>
+#include <iosfwd>
 #include <vector>
 
 namespace geocomp::dem {
@@ -148,6 +149,15 @@ public:
   void import_contact_state(const std::vector<ContactState>& states);
   /// Listed pair slots (touching or within the skin), storage indices.
   const ContactLists& contact_lists() const { return lists_; }
+
+  // --- checkpoints
+  /// The complete state (particles in storage order, walls, law, settings, contact lists
+  /// with histories, neighbour-search references, counters, energy ledger) as raw binary:
+  /// a system read back continues bit for bit as the original would, at the same thread
+  /// count and with the same build (the format checks the struct sizes). Whoever adds a
+  /// member to DemSystem or NeighbourSearch must add it here (DemSystem.cpp).
+  void write_state(std::ostream& out) const;
+  void read_state(std::istream& in);
 
   // --- energy and memory
   EnergyLedger energy() const;

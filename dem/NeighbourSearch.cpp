@@ -1,5 +1,7 @@
 #include "dem/NeighbourSearch.h"
 
+#include "dem/BinaryState.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -178,6 +180,34 @@ std::size_t NeighbourSearch::memory_bytes() const
   return grid_.memory_bytes() + (x_ref_.capacity() + wall_ref_.capacity()) * sizeof(Vec3) +
          count_.capacity() * sizeof(std::uint32_t) +
          (pair_archive_.capacity() + wall_archive_.capacity()) * sizeof(HistoryEntry);
+}
+
+void NeighbourSearch::write_state(std::ostream& out) const
+{
+  binary::put_tag(out, "NBSEARCH", 1);
+  binary::put(out, skin_);
+  binary::put(out, sort_);
+  binary::put(out, imported_);
+  binary::put<std::uint64_t>(out, n_builds_);
+  binary::put_vector(out, x_ref_);
+  binary::put_vector(out, wall_ref_);
+  binary::put_vector(out, pair_archive_);
+  binary::put_vector(out, wall_archive_);
+}
+
+void NeighbourSearch::read_state(std::istream& in)
+{
+  binary::expect_tag(in, "NBSEARCH", 1);
+  binary::get(in, skin_);
+  binary::get(in, sort_);
+  binary::get(in, imported_);
+  std::uint64_t builds = 0;
+  binary::get(in, builds);
+  n_builds_ = std::size_t(builds);
+  binary::get_vector(in, x_ref_);
+  binary::get_vector(in, wall_ref_);
+  binary::get_vector(in, pair_archive_);
+  binary::get_vector(in, wall_archive_);
 }
 
 }  // namespace geocomp::dem

@@ -19,6 +19,7 @@
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
 
+#include <iosfwd>
 #include <vector>
 
 namespace geocomp::dem {
@@ -46,6 +47,10 @@ public:
 
   std::size_t n_builds() const { return n_builds_; }
   std::size_t memory_bytes() const;
+  /// Checkpoint state: skin, flags, build references and carried histories (the cell
+  /// grid is rebuilt at every build and is not part of it).
+  void write_state(std::ostream& out) const;
+  void read_state(std::istream& in);
 
 private:
   void archive(const ParticleStore& store, const ContactLists& lists);

@@ -40,6 +40,7 @@ struct Arguments {
 // Registered by the files that implement them.
 Command check_command();
 Command print_parameters_command();
+Command dem_command();
 Command material_point_command();
 Command continuum_command();
 Command pair_command();

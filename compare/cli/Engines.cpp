@@ -2,10 +2,20 @@
 
 #include "continuum/driver/MaterialPointEngine.h"
 #include "continuum/fe/CubeEngine.h"
+#include "common/AtomicFile.h"
+#include "common/Version.h"
+#include "dem/program/DemEngine.h"
+#include "dem/program/SpecimenPreparation.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
 
 namespace geocomp::cli {
+
+namespace fs = std::filesystem;
 
 namespace {
 continuum::PiecewiseLinear table(const HardeningTable &t, double scale)
@@ -49,6 +59,66 @@ double box_size(const SpecimenParameters &s)
 }
 } // namespace
 
+namespace {
+/// Everything the prepared specimen depends on, one line per value (the cache key).
+std::string specimen_key(const CaseDescription &c)
+{
+  std::ostringstream o;
+  o.precision(17);
+  const SpecimenParameters &s = c.specimen;
+  const ContactParameters &k = c.contact;
+  const DemParameters &d = c.dem;
+  o << "build " << GEOCOMP_GIT_HASH << "\nseed " << c.seed << "\nsource " << s.source << ' ' << s.store_file << ' '
+    << s.store_name << ' ' << s.text_file << "\nN " << s.particles << "\neta " << s.packing_fraction << "\nR "
+    << s.radius << ' ' << s.size_distribution << ' ' << s.radius_spread << ' ' << s.lognormal_sigma << "\nL0 "
+    << s.box_size << "\nrho " << s.density << "\nsigma0 " << s.isotropic_pressure << "\naristotelian "
+    << s.aristotelian << "\ncontact " << k.model << ' ' << k.youngs_modulus << ' ' << k.poisson_ratio << ' '
+    << k.impact_velocity << ' ' << k.restitution << ' ' << k.normal_stiffness << ' ' << k.normal_damping << ' '
+    << k.tangential_stiffness_ratio << ' ' << k.particle_friction << ' ' << k.wall_friction << "\ndem "
+    << d.time_step_safety << ' ' << d.threads << ' ' << d.local_damping << ' ' << d.skin << ' '
+    << d.servo_max_velocity << ' ' << d.servo_gain << "\n";
+  return o.str();
+}
+
+std::string read_text(const fs::path &file)
+{
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The case's consolidated specimen in its engine: from `<dir>/dem-specimen.bin` when that
+/// was prepared from the same specimen, contact and dem parameters by this build,
+/// otherwise prepared now (dem::prepare_specimen) and cached there.
+std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const fs::path &dir)
+{
+  dem::DemEngineParameters p = dem::DemEngineParameters::from_case(c.dem);
+  const fs::path cache = dir / "dem-specimen.bin", key_file = dir / "dem-specimen.key";
+  const std::string key = specimen_key(c);
+  if (fs::exists(cache) && fs::exists(key_file) && read_text(key_file) == key) {
+    try {
+      auto e = dem::DemEngine::from_checkpoint(cache, p);
+      std::cout << "dem: prepared specimen reused: " << cache.string() << "\n";
+      return e;
+    } catch (const std::exception &) {
+      // Unreadable cache: prepare again.
+    }
+  }
+  std::cout << "dem: preparing the specimen (" << c.specimen.particles << " spheres, sigma_0 = "
+            << c.specimen.isotropic_pressure << " Pa)\n";
+  dem::PreparedSpecimen s = dem::prepare_specimen(c, {}, [](const std::string &phase, double t) {
+    std::cout << "  " << phase << ": " << t << " s of DEM time\n" << std::flush;
+  });
+  std::cout << "dem: specimen: " << s.record.describe() << "\n";
+  auto e = std::make_unique<dem::DemEngine>(std::move(s.system), p);
+  fs::create_directories(dir);
+  e->write_checkpoint(cache);
+  write_atomically(key_file, [&key](const fs::path &tmp) { std::ofstream(tmp) << key; });
+  return e;
+}
+} // namespace
+
 const std::vector<std::string> &engine_names()
 {
   static const std::vector<std::string> names = {"material-point", "continuum", "dem"};
@@ -87,6 +157,8 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
       p.output_directory = output_dir + "/continuum-fields";
     return std::make_unique<continuum::CubeEngine>(p, continuum_material(c), communicator);
   }
+  if (name == "dem")
+    return make_dem_engine(c, output_dir);
   throw CaseError(c.file, "engines", "the '" + name + "' engine is not available in this build");
 }
 

@@ -11,10 +11,14 @@
 #include "compare/LocalizationOnsets.h"
 #include "compare/Metrics.h"
 #include "compare/Report.h"
+#include "dem/program/DemEngine.h"
+#include "dem/program/Fields.h"
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <iostream>
 
 namespace geocomp::cli {
@@ -35,6 +39,95 @@ int rank()
 }
 
 std::string command_line;
+
+/// DEM particle snapshots of a run, inside the output folder.
+const char *const dem_fields_file = "dem-fields.h5";
+
+/// The strain measure onsets are reported in (compare::onset_strain_measure's): -eps_zz
+/// on axial programs, gamma_max on isochoric ones.
+double onset_label(const ResponseSample &s, compare::CurveKind kind)
+{
+  return kind == compare::CurveKind::AxialLateral ? -s.strain(2, 2) : gamma_max(s.strain);
+}
+
+/// DEM particle snapshots along the main path of the last stage, for the localization
+/// analysis and the mid-section maps: at its first sample and each time its progress
+/// passes k/n (n = dem/snapshots), appended to <dir>/dem-fields.h5 (XDMF sidecar beside).
+class SnapshotRecorder {
+public:
+  SnapshotRecorder(dem::DemEngine &engine, const CaseDescription &c, const fs::path &dir)
+    : engine_(engine), file_(dir / dem_fields_file), n_(std::max(1u, c.dem.snapshots)),
+      kind_(compare::curve_kind_for(c.program))
+  {
+    fs::create_directories(dir);
+    fs::remove(file_);
+    fs::remove(dem::xdmf_path(file_));
+  }
+  void operator()(const RunProgress &p)
+  {
+    if (p.branch != 0 || p.stage != p.stage_count - 1 || next_ > n_)
+      return;
+    if (next_ > 0 && p.stage_fraction < double(next_) / double(n_) - 1e-12)
+      return;
+    dem::append_snapshot(file_, engine_.snapshot(onset_label(*p.sample, kind_)));
+    while (next_ <= n_ && p.stage_fraction >= double(next_) / double(n_) - 1e-12)
+      ++next_;
+  }
+
+private:
+  dem::DemEngine &engine_;
+  fs::path file_;
+  unsigned int n_, next_ = 0;
+  compare::CurveKind kind_;
+};
+
+/// The DEM side of the report from the particle snapshots: localization onset and band
+/// (compare::detect_localization, local-strain radius 3 mean radii, docs/metrics.md) as
+/// the DEM entry of the verdict, and the mid-section maps of u_x and u_z in the slab
+/// |y - L0/2| <= 2 R between the first and the last snapshot (S0 Fig. 3, 5).
+void add_dem_fields(compare::ReportInput &in, const fs::path &dir, std::vector<compare::OnsetEstimate> &onsets)
+{
+  const fs::path file = dir / dem_fields_file;
+  if (!fs::exists(file)) {
+    in.notes.push_back("DEM: no particle snapshots in " + file.string() + "; no DEM onset or maps.");
+    return;
+  }
+  const std::vector<dem::ParticleFields> fields = dem::read_snapshots(file);
+  if (fields.size() < 2) {
+    in.notes.push_back("DEM: fewer than two particle snapshots; no DEM onset or maps.");
+    return;
+  }
+  std::vector<compare::ParticleSnapshot> snapshots;
+  for (const auto &f : fields)
+    snapshots.push_back({f.ids, f.positions, f.label});
+  double mean_radius = 0.0;
+  for (double r : fields.front().radii)
+    mean_radius += r / double(fields.front().radii.size());
+  compare::LocalizationOptions options;
+  options.strain.radius = 3.0 * mean_radius;
+  const compare::LocalizationResult loc = compare::detect_localization(snapshots, options);
+  compare::OnsetEstimate dem_onset;
+  dem_onset.source = "DEM (particle local strain)";
+  dem_onset.found = loc.onset_found;
+  dem_onset.strain = loc.onset_label;
+  dem_onset.has_angle = loc.band.found;
+  dem_onset.angle_deg = loc.band.angle_to_compressive_deg;
+  std::ostringstream note;
+  note << fields.size() << " snapshots; heterogeneity index (CV of the incremental local shear strain) up to "
+       << (loc.index.empty() ? 0.0 : *std::max_element(loc.index.begin(), loc.index.end())) << ", threshold "
+       << options.threshold;
+  if (loc.band.found)
+    note << "; band of " << loc.band.band_particles << " particles, planarity " << loc.band.planarity;
+  dem_onset.note = note.str();
+  onsets.push_back(dem_onset);
+  const dem::ParticleFields &first = fields.front(), &last = fields.back();
+  const double y_mid = 0.5 * (first.box_min.y() + first.box_max.y());
+  std::ostringstream title;
+  title << "DEM, y = L0/2, from strain " << first.label << " to " << last.label;
+  for (int component : {0, 2})
+    in.maps.push_back(compare::midsection_map(snapshots.front(), snapshots.back(), y_mid, 2.0 * mean_radius,
+                                              component, title.str()));
+}
 
 /// Results of `engine` for case `c` in `dir` if they were made from the same case text by
 /// the same build; otherwise none.
@@ -64,8 +157,15 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
   std::unique_ptr<LoadingEngine> e = make_engine(engine, c, dir.string(), engine_comm);
   ProgramRunner runner(c.program, *e);
   ProgressPrinter progress(engine);
-  if (rank() == 0)
-    runner.on_progress([&progress](const RunProgress &p) { progress(p); });
+  std::unique_ptr<SnapshotRecorder> snapshots;
+  if (auto *d = dynamic_cast<dem::DemEngine *>(e.get()))
+    snapshots = std::make_unique<SnapshotRecorder>(*d, c, dir);
+  runner.on_progress([&](const RunProgress &p) {
+    if (snapshots)
+      (*snapshots)(p);
+    if (rank() == 0)
+      progress(p);
+  });
   Response r = runner.run();
   progress.finish();
   if (rank() == 0) {
@@ -90,7 +190,8 @@ std::string label_of(const std::string &engine)
   return "material point";
 }
 
-compare::ReportInput report_input(const CaseDescription &c, const std::vector<std::pair<std::string, Response>> &runs)
+compare::ReportInput report_input(const CaseDescription &c, const std::vector<std::pair<std::string, Response>> &runs,
+                                  const fs::path &dir)
 {
   compare::ReportInput in;
   in.title = c.title.empty() ? "geocomp: " + c.file : c.title;
@@ -114,6 +215,8 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
       point = &response;
     if (engine != "dem")
       onsets.push_back(compare::acoustic_tensor_onset(response, label_of(engine) + " (acoustic tensor)", in.kind));
+    else
+      add_dem_fields(in, dir, onsets);
   }
   if (point) {
     const continuum::MaterialParameters m = continuum_material(c);
@@ -197,6 +300,16 @@ Command engine_command(const std::string &engine, const std::string &summary, co
 
 void set_command_line(const std::string &line) { command_line = line; }
 
+Command dem_command()
+{
+  return engine_command("dem", "run the DEM specimen in its wall box through the program",
+                        "Prepares (or reuses, <output>/dem-specimen.bin) the case's consolidated specimen,\n"
+                        "then plays the loading program with kinematic and servo walls (S0 eq. (3) as\n"
+                        "wall positions), measuring wall and Love-Weber stress, coordination, fabric,\n"
+                        "inertial number and unbalanced force; particle snapshots go to\n"
+                        "<output>/dem-fields.h5 with an XDMF sidecar for ParaView.\n");
+}
+
 Command material_point_command()
 {
   return engine_command("material-point", "run the continuum model at one material point through the program",
@@ -236,7 +349,7 @@ int pair_case(const CaseDescription &c, const fs::path &dir, bool reuse)
   for (const auto &engine : engine_names())
     if (std::find(c.engines.begin(), c.engines.end(), engine) != c.engines.end())
       runs.emplace_back(engine, run_engine(engine, c, dir, reuse));
-  return write_and_say(report_input(c, runs), dir);
+  return write_and_say(report_input(c, runs, dir), dir);
 }
 
 Command sweep_command()
@@ -303,7 +416,7 @@ Command report_command()
       }
       if (runs.empty())
         throw std::runtime_error("no results in " + dir.string() + "; run `geocomp pair` first");
-      return write_and_say(report_input(cd, runs), dir);
+      return write_and_say(report_input(cd, runs, dir), dir);
     });
   };
   return c;
