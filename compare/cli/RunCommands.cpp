@@ -6,11 +6,14 @@
 #include "Progress.h"
 
 #include "common/ProgramRunner.h"
+#include "common/AtomicFile.h"
+#include "common/Hdf5.h"
 #include "common/ResponseFile.h"
 #include "common/Version.h"
 #include "compare/LocalizationOnsets.h"
 #include "compare/Metrics.h"
 #include "compare/Report.h"
+#include "continuum/fe/CubeEngine.h"
 #include "dem/program/DemEngine.h"
 #include "dem/program/Fields.h"
 
@@ -42,6 +45,40 @@ std::string command_line;
 
 /// DEM particle snapshots of a run, inside the output folder.
 const char *const dem_fields_file = "dem-fields.h5";
+/// The FE cube's mid-plane fields at the end of the main path.
+const char *const continuum_plane_file = "continuum-midplane.h5";
+const char *const plane_columns[5] = {"x", "z", "u_x", "u_z", "kappa"};
+
+/// Writes the cube's mid-plane (collective; rank 0 writes, atomically).
+void write_mid_plane(const continuum::CubeEngine &cube, const fs::path &dir)
+{
+  const continuum::MidPlaneSample plane = cube.mid_plane();
+  if (rank() != 0)
+    return;
+  fs::create_directories(dir);
+  write_atomically(dir / continuum_plane_file, [&plane](const fs::path &tmp) {
+    const h5::Handle f = h5::create_file(tmp);
+    const std::vector<double> *columns[5] = {&plane.x, &plane.z, &plane.ux, &plane.uz, &plane.kappa};
+    for (int k = 0; k < 5; ++k)
+      h5::write(f.id(), plane_columns[k], *columns[k], {hsize_t(columns[k]->size())}, k == 4 ? "1" : "m");
+  });
+}
+
+/// FE maps beside the DEM ones: u_x and the equivalent plastic strain kappa on y = L0/2.
+void add_continuum_plane(compare::ReportInput &in, const fs::path &dir)
+{
+  const fs::path file = dir / continuum_plane_file;
+  if (!fs::exists(file))
+    return;
+  const h5::Handle f = h5::open_file(file);
+  std::vector<std::vector<double>> c;
+  for (const char *name : plane_columns)
+    c.push_back(h5::read_doubles(f.id(), name));
+  compare::DisplacementMap ux{"FE cube, y = L0/2, end of the main path", "u_x", c[0], c[1], c[2]};
+  compare::DisplacementMap kappa{"FE cube, y = L0/2, end of the main path", "kappa", c[0], c[1], c[4], 100.0, "%"};
+  in.maps.push_back(ux);
+  in.maps.push_back(kappa);
+}
 
 /// The strain measure onsets are reported in (compare::onset_strain_measure's): -eps_zz
 /// on axial programs, gamma_max on isochoric ones.
@@ -168,6 +205,8 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
   });
   Response r = runner.run();
   progress.finish();
+  if (const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get()))
+    write_mid_plane(*cube, dir);
   if (rank() == 0) {
     RunMeta meta;
     meta.case_file = c.file;
@@ -217,6 +256,19 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
       onsets.push_back(compare::acoustic_tensor_onset(response, label_of(engine) + " (acoustic tensor)", in.kind));
     else
       add_dem_fields(in, dir, onsets);
+    if (engine == "continuum")
+      add_continuum_plane(in, dir);
+  }
+  // DEM and FE maps side by side: DEM u_x | FE u_x, DEM u_z | FE kappa.
+  std::vector<compare::DisplacementMap> dem_maps, fe_maps;
+  for (auto &m : in.maps)
+    (m.title.rfind("DEM", 0) == 0 ? dem_maps : fe_maps).push_back(std::move(m));
+  in.maps.clear();
+  for (std::size_t k = 0; k < std::max(dem_maps.size(), fe_maps.size()); ++k) {
+    if (k < dem_maps.size())
+      in.maps.push_back(std::move(dem_maps[k]));
+    if (k < fe_maps.size())
+      in.maps.push_back(std::move(fe_maps[k]));
   }
   if (point) {
     const continuum::MaterialParameters m = continuum_material(c);

@@ -100,6 +100,13 @@ struct CubeStatistics {
   unsigned last_step_iterations = 0;
 };
 
+/// Fields on the mid-plane y = L/2 of the cube (S0 Fig. 3-5 maps): a 3 x 3 grid of points
+/// in each cell the plane cuts, with the displacement there and the cell's volume-averaged
+/// equivalent plastic strain kappa. Gathered on rank 0 (empty elsewhere).
+struct MidPlaneSample {
+  std::vector<double> x, z, ux, uz, kappa;
+};
+
 class CubeEngine : public LoadingEngine {
 public:
   CubeEngine(const CubeParameters &parameters, std::shared_ptr<const MaterialFactory> material,
@@ -119,6 +126,8 @@ public:
   unsigned n_dofs() const;
   /// Element size h_e used by the crack band [m].
   double element_size() const;
+  /// The current state on the plane y = L/2 (collective: every rank calls it).
+  MidPlaneSample mid_plane() const;
 
 private:
   struct Impl;

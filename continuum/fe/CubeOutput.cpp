@@ -8,6 +8,8 @@
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <filesystem>
@@ -76,6 +78,58 @@ void CubeEngine::Impl::write_output(double t)
     std::ofstream pvd(directory + prm.output_basename + ".pvd");
     DataOutBase::write_pvd_record(pvd, pvd_records);
   }
+}
+
+// The mid-plane: for each locally owned cell with y0 <= L/2 < y1, the points
+// (xi, eta, zeta) = ({1,3,5}/6, (L/2 - y0)/h_y, {1,3,5}/6) in the reference cell (the mesh is
+// an axis-aligned brick, so reference and real coordinates map affinely).
+MidPlaneSample CubeEngine::mid_plane() const
+{
+  const Impl &m = *impl_;
+  const double y_mid = 0.5 * m.prm.side;
+  MidPlaneSample local;
+  const FEValuesExtractors::Vector displacement(0);
+  for (const auto &cell : m.dof_handler.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    double y0 = cell->vertex(0)[1], y1 = y0;
+    for (unsigned v = 1; v < GeometryInfo<3>::vertices_per_cell; ++v) {
+      y0 = std::min(y0, cell->vertex(v)[1]);
+      y1 = std::max(y1, cell->vertex(v)[1]);
+    }
+    if (!(y0 <= y_mid && y_mid < y1))
+      continue;
+    const double eta = (y_mid - y0) / (y1 - y0);
+    std::vector<Point<3>> points;
+    for (double zeta : {1.0 / 6, 0.5, 5.0 / 6})
+      for (double xi : {1.0 / 6, 0.5, 5.0 / 6})
+        points.emplace_back(xi, eta, zeta);
+    const Quadrature<3> plane(points, std::vector<double>(points.size(), 1.0 / points.size()));
+    FEValues<3> values(m.fe, plane, update_values | update_quadrature_points);
+    values.reinit(cell);
+    std::vector<Tensor<1, 3>> u(points.size());
+    values[displacement].get_function_values(m.solution, u);
+    double volume = 0.0, kappa = 0.0;
+    for (const auto &d : m.qp_data.get_data(Impl::Cell(cell))) {
+      volume += d->JxW;
+      kappa += d->old_history.kappa * d->JxW;
+    }
+    for (unsigned q = 0; q < points.size(); ++q) {
+      local.x.push_back(values.quadrature_point(q)[0]);
+      local.z.push_back(values.quadrature_point(q)[2]);
+      local.ux.push_back(u[q][0]);
+      local.uz.push_back(u[q][2]);
+      local.kappa.push_back(kappa / volume);
+    }
+  }
+  MidPlaneSample all;
+  for (auto member : {&MidPlaneSample::x, &MidPlaneSample::z, &MidPlaneSample::ux, &MidPlaneSample::uz,
+                      &MidPlaneSample::kappa}) {
+    const std::vector<std::vector<double>> parts = Utilities::MPI::gather(m.comm, local.*member, 0);
+    for (const auto &part : parts)
+      (all.*member).insert((all.*member).end(), part.begin(), part.end());
+  }
+  return all;
 }
 
 } // namespace geocomp::continuum

@@ -2,6 +2,8 @@
 // and the MPI sweep.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -26,6 +28,20 @@ std::string read(const fs::path &p)
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// Standard output of a shell command.
+std::string read_command(const std::string &cmd)
+{
+  std::string out;
+  if (FILE *p = ::popen(cmd.c_str(), "r")) {
+    char buffer[4096];
+    std::size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, p)) > 0)
+      out.append(buffer, n);
+    ::pclose(p);
+  }
+  return out;
 }
 
 /// The demo case with the given engines, writing into `dir`.
@@ -80,4 +96,33 @@ TEST(SweepCommand, SpreadsCasesOverTwoRanks)
   EXPECT_NE(out.find("rank 0 case " + (s.dir / "c2.prm").string() + ": done"), std::string::npos) << out;
   for (int k = 0; k < 3; ++k)
     EXPECT_TRUE(fs::exists(s.dir / ("c" + std::to_string(k)) / "material-point.h5"));
+}
+
+TEST(PairCommand, DemAndCubeGiveSnapshotsOnsetMapsAndTheSameCurvesAgain)
+{
+  Scratch s;
+  fs::path c = make_case(s.dir, "all", "dem, continuum, material-point", 3);
+  std::string text = read(c);
+  text = std::regex_replace(text, std::regex("set particles          = [^\n]*"), "set particles = 343");
+  text = std::regex_replace(text, std::regex("set cells per edge     = [^\n]*"), "set cells per edge = 2");
+  std::ofstream(c) << text;
+  const std::string exe = std::string("'") + GEOCOMP_EXE + "' ";
+  ASSERT_EQ(run(exe + "pair '" + c.string() + "' > '" + (s.dir / "out1").string() + "' 2>&1"), 0)
+    << read(s.dir / "out1");
+  const fs::path out = s.dir / "all";
+  for (const char *f : {"dem.h5", "dem-fields.h5", "dem-fields.xdmf", "dem-specimen.bin", "continuum.h5",
+                        "continuum-midplane.h5", "material-point.h5", "report/index.html", "report/map3.png"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  // 12 snapshots after the first one, all on the main path of the last stage.
+  const std::string groups = read_command("h5ls '" + (out / "dem-fields.h5").string() + "/snapshots'");
+  EXPECT_EQ(std::count(groups.begin(), groups.end(), '\n'), 13) << groups;
+  const std::string metrics = read(out / "report/metrics.json");
+  EXPECT_NE(metrics.find("DEM (particle local strain)"), std::string::npos);
+  EXPECT_NE(metrics.find("\"DEM\""), std::string::npos);
+  // Rerun the DEM alone: the prepared specimen is reused and the curves are the same bits.
+  const std::string stress1 = read_command("h5dump -d /response/stress '" + (out / "dem.h5").string() + "'");
+  ASSERT_EQ(run(exe + "dem '" + c.string() + "' --force > '" + (s.dir / "out2").string() + "' 2>&1"), 0)
+    << read(s.dir / "out2");
+  EXPECT_NE(read(s.dir / "out2").find("prepared specimen reused"), std::string::npos) << read(s.dir / "out2");
+  EXPECT_EQ(read_command("h5dump -d /response/stress '" + (out / "dem.h5").string() + "'"), stress1);
 }

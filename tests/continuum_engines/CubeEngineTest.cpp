@@ -118,6 +118,25 @@ TEST(CubeEngine, ElasticUniaxialStrainMatchesOedometricModulus)
   EXPECT_NEAR(last.stress(1, 1) / (lambda_L * -0.002), 1.0, 1e-9);
 }
 
+TEST(CubeEngine, MidPlaneShowsTheHomogeneousDisplacementAndPlasticStrain)
+{
+  // Homogeneous deformation of the cube [0, L]^3 with the lower faces held: on the plane
+  // y = L/2 the displacement is u_a = eps_a x_a, and kappa is the same everywhere.
+  const MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(10));
+  const CubeParameters cp = small_cube(2);
+  CubeEngine cube(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
+  const Response r = ProgramRunner(triaxial(0.01), cube).run();
+  const ResponseSample &last = r.samples.back();
+  const MidPlaneSample plane = cube.mid_plane();
+  ASSERT_EQ(plane.x.size(), 2u * 2u * 9u); // the plane cuts the upper layer of a 2^3 mesh
+  for (std::size_t k = 0; k < plane.x.size(); ++k) {
+    EXPECT_NEAR(plane.ux[k], last.strain(0, 0) * plane.x[k], 1e-9 * cp.side) << k;
+    EXPECT_NEAR(plane.uz[k], last.strain(2, 2) * plane.z[k], 1e-9 * cp.side) << k;
+    EXPECT_NEAR(plane.kappa[k], plane.kappa[0], 1e-9) << k;
+  }
+  EXPECT_GT(plane.kappa[0], 1e-3); // past the peak of the triaxial program
+}
+
 TEST(CubeEngine, HomogeneousPlasticCubeEqualsMaterialPointAndPeak)
 {
   const MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(10));
