@@ -445,33 +445,60 @@ Command sweep_command()
   return c;
 }
 
-Command report_command()
+/// The results of the case's engines found in `dir` (nothing is run).
+std::vector<std::pair<std::string, Response>> existing_results(const fs::path &dir)
+{
+  std::vector<std::pair<std::string, Response>> runs;
+  for (const auto &engine : engine_names()) {
+    const fs::path file = dir / results_file(engine);
+    if (fs::exists(file))
+      runs.emplace_back(engine, read_response(file));
+  }
+  if (runs.empty())
+    throw std::runtime_error("no results in " + dir.string() + "; run `geocomp pair` first");
+  return runs;
+}
+
+/// `report` and `compare`: existing results of a case, then `action` on the comparison.
+Command existing_results_command(const std::string &name, const std::string &summary, const std::string &details,
+                                 const std::function<int(const compare::ReportInput &, const fs::path &)> &action)
 {
   Command c;
-  c.name = "report";
-  c.summary = "compare existing results of a case and write the report";
-  c.usage = "usage: geocomp report <case> [--output DIR]\n\n"
-            "Reads the results files of the case's engines from the output directory (nothing is\n"
-            "run) and writes the comparison report.\n";
-  c.run = [](const std::vector<std::string> &args) {
+  c.name = name;
+  c.summary = summary;
+  c.usage = "usage: geocomp " + name + " <case> [--output DIR]\n\n" + details;
+  c.run = [action](const std::vector<std::string> &args) {
     const Arguments a = Arguments::parse(args, {"output"}, {});
     if (a.positional.size() != 1)
       throw UsageError("expected exactly one case file");
     return guarded([&] {
       const CaseDescription cd = read_case(a.positional[0]);
       const fs::path dir = a.has("output") ? fs::path(a.get("output")) : fs::path(cd.output.directory);
-      std::vector<std::pair<std::string, Response>> runs;
-      for (const auto &engine : engine_names()) {
-        const fs::path file = dir / results_file(engine);
-        if (fs::exists(file))
-          runs.emplace_back(engine, read_response(file));
-      }
-      if (runs.empty())
-        throw std::runtime_error("no results in " + dir.string() + "; run `geocomp pair` first");
-      return write_and_say(report_input(cd, runs, dir), dir);
+      return action(report_input(cd, existing_results(dir), dir), dir);
     });
   };
   return c;
+}
+
+Command compare_command()
+{
+  return existing_results_command(
+    "compare", "compare existing results of a case and print the metrics and verdict (JSON)",
+    "Reads the results files of the case's engines from the output directory (nothing is\n"
+    "run, nothing is written) and prints metrics.json's content: the metrics of every\n"
+    "engine, their differences and the Rudnicki-Rice verdict.\n",
+    [](const compare::ReportInput &in, const fs::path &) {
+      std::cout << compare::metrics_json(in);
+      return static_cast<int>(ok);
+    });
+}
+
+Command report_command()
+{
+  return existing_results_command("report", "compare existing results of a case and write the report",
+                                  "Reads the results files of the case's engines from the output directory (nothing is\n"
+                                  "run) and writes the comparison report.\n",
+                                  [](const compare::ReportInput &in, const fs::path &dir) { return write_and_say(in, dir); });
 }
 
 } // namespace geocomp::cli

@@ -124,7 +124,7 @@ TEST(CommandLine, UnreadableCaseAndUnknownOptionsAreBadInput)
 
 TEST(CommandLine, ShippedCasesPassCheck)
 {
-  for (const auto &e : fs::directory_iterator(source_dir() / "cases"))
+  for (const auto &e : fs::recursive_directory_iterator(source_dir() / "cases"))
     if (e.path().extension() == ".prm" || e.path().extension() == ".json") {
       const Result r = run(fs::temp_directory_path(), "check '" + fs::absolute(e.path()).string() + "'");
       EXPECT_EQ(r.code, 0) << e.path() << ": " << r.err;

@@ -79,6 +79,10 @@ TEST(PairCommand, WritesResultsAndReportThenReusesThem)
   // No temporary files are left in the results folder.
   for (const auto &e : fs::directory_iterator(s.dir / "mp"))
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+  // `compare` prints what metrics.json holds and writes nothing.
+  const auto before = fs::last_write_time(s.dir / "mp/report/metrics.json");
+  EXPECT_EQ(read_command(exe + "compare '" + c.string() + "'"), read(s.dir / "mp/report/metrics.json"));
+  EXPECT_EQ(fs::last_write_time(s.dir / "mp/report/metrics.json"), before);
 }
 
 TEST(SweepCommand, SpreadsCasesOverTwoRanks)
