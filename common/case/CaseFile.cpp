@@ -36,6 +36,7 @@ void declare_all(ParameterHandler &prm, unsigned int stages)
   sections::declare_continuum(prm);
   sections::declare_program(prm, stages);
   sections::declare_output(prm);
+  sections::declare_calibration(prm);
 }
 
 /// deal.II's exception text carries file/line of the library; keep the part for users.
@@ -219,6 +220,7 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
     c.continuum = sections::parse_continuum(prm, reader);
     c.program = sections::parse_program(prm, stages, reader);
     c.output = sections::parse_output(prm, reader);
+    c.calibration = sections::parse_calibration(prm, reader);
   } catch (const ExceptionBase &e) {
     const std::string msg = user_message(e.what(), path);
     throw CaseError(path, parameter_in(msg, prm_text), msg);

@@ -98,6 +98,26 @@ struct OutputParameters {
   bool fields = true;                   ///< VTU / XDMF field output
 };
 
+/// Bounds of one calibrated parameter family ("E", "nu", "cohesion", "friction",
+/// "dilatancy"), in case-file units (Pa, degrees).
+struct ParameterBounds {
+  std::string name;
+  double lower = 0.0, upper = 0.0;
+};
+
+/// What `geocomp calibrate` fits (docs/calibration.md).
+struct CalibrationParameters {
+  std::vector<std::string> targets;     ///< results files (.h5) of the curves to fit, e.g. DEM runs
+  std::vector<double> weights;          ///< one per target; empty: all 1
+  /// E, nu, cohesion, friction, dilatancy; a table name frees all its knots, name[k] one knot.
+  std::vector<std::string> free_parameters{"E", "nu", "cohesion", "friction", "dilatancy"};
+  std::vector<ParameterBounds> bounds;  ///< overrides of the default bounds
+  std::string starting_values = "closed-form"; ///< closed-form | case
+  double volumetric_weight = 1.0;       ///< weight of volumetric-strain residuals against stress ones
+  unsigned int max_iterations = 100;
+  std::string output_file = "calibrated.prm"; ///< inside the output directory's calibration/ folder
+};
+
 struct CaseDescription {
   std::string file;                     ///< as given on the command line
   std::string text;                     ///< whole file, stored in every results file
@@ -110,6 +130,7 @@ struct CaseDescription {
   ContinuumParameters continuum;
   LoadingProgram program;
   OutputParameters output;
+  CalibrationParameters calibration;
 };
 
 /// Reads and validates a case file; throws CaseError (never leaves anything behind).

@@ -28,6 +28,9 @@ LoadingProgram parse_program(dealii::ParameterHandler &prm, unsigned int stages,
 void declare_output(dealii::ParameterHandler &prm);
 OutputParameters parse_output(dealii::ParameterHandler &prm, const Reader &r);
 
+void declare_calibration(dealii::ParameterHandler &prm);
+CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Reader &r);
+
 /// "0:1e5, 0.02:1.2e5" -> table; fails naming `parameter`.
 HardeningTable parse_table(const std::string &text, const std::string &parameter, const Reader &r);
 

@@ -1,5 +1,6 @@
 #include "Engines.h"
 
+#include "continuum/driver/CaseMaterial.h"
 #include "continuum/driver/MaterialPointEngine.h"
 #include "continuum/fe/CubeEngine.h"
 #include "common/AtomicFile.h"
@@ -17,36 +18,13 @@ namespace geocomp::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-continuum::PiecewiseLinear table(const HardeningTable &t, double scale)
-{
-  std::vector<std::pair<double, double>> points;
-  for (const auto &[k, v] : t.points)
-    points.emplace_back(k, v * scale);
-  return continuum::PiecewiseLinear(points);
-}
-
-} // namespace
-
 continuum::MaterialParameters continuum_material(const CaseDescription &c)
 {
-  const ContinuumParameters &p = c.continuum;
-  continuum::MaterialParameters m;
-  m.model = p.model;
-  m.mohr_coulomb.youngs_modulus = p.youngs_modulus;
-  m.mohr_coulomb.poisson_ratio = p.poisson_ratio;
-  m.mohr_coulomb.cohesion = table(p.cohesion, 1.0);
-  m.mohr_coulomb.friction_angle = table(p.friction_angle, M_PI / 180.0);
-  m.mohr_coulomb.dilatancy_angle = table(p.dilatancy_angle, M_PI / 180.0);
-  m.drucker_prager_matching = p.dp_matching == "inner"   ? continuum::DruckerPragerMatching::inner_cone
-                              : p.dp_matching == "outer" ? continuum::DruckerPragerMatching::outer_cone
-                                                         : continuum::DruckerPragerMatching::plane_strain;
   try {
-    m.mohr_coulomb.validate();
+    return continuum::material_from_case(c.continuum);
   } catch (const std::invalid_argument &e) {
     throw CaseError(c.file, "continuum", e.what());
   }
-  return m;
 }
 
 namespace {

@@ -13,6 +13,7 @@
 #include "compare/LocalizationOnsets.h"
 #include "compare/Metrics.h"
 #include "compare/Report.h"
+#include "compare/calibrate/FitReport.h"
 #include "continuum/fe/CubeEngine.h"
 #include "dem/program/DemEngine.h"
 #include "dem/program/Fields.h"
@@ -259,6 +260,7 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
     if (engine == "continuum")
       add_continuum_plane(in, dir);
   }
+  in.calibrated_parameters = calibration::read_parameter_table(dir / "calibration");
   // DEM and FE maps side by side: DEM u_x | FE u_x, DEM u_z | FE kappa.
   std::vector<compare::DisplacementMap> dem_maps, fe_maps;
   for (auto &m : in.maps)

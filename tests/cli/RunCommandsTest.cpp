@@ -130,3 +130,46 @@ TEST(PairCommand, DemAndCubeGiveSnapshotsOnsetMapsAndTheSameCurvesAgain)
   EXPECT_NE(read(s.dir / "out2").find("prepared specimen reused"), std::string::npos) << read(s.dir / "out2");
   EXPECT_EQ(read_command("h5dump -d /response/stress '" + (out / "dem.h5").string() + "'"), stress1);
 }
+
+TEST(CalibrateCommand, RecoversTheModulusOfAMaterialPointTargetAndRefusesMissingTargets)
+{
+  Scratch s;
+  const fs::path t = make_case(s.dir, "target", "material-point", 1);
+  const std::string exe = std::string("'") + GEOCOMP_EXE + "' ";
+  ASSERT_EQ(run(exe + "material-point '" + t.string() + "' > '" + (s.dir / "o1").string() + "' 2>&1"), 0)
+    << read(s.dir / "o1");
+  // The same case with E off by a third, calibrated back on the target.
+  std::string text = read(t);
+  // The continuum section's E (the contact section has one too).
+  const std::size_t section = text.find("subsection continuum");
+  ASSERT_NE(section, std::string::npos);
+  std::string continuum = text.substr(section);
+  std::smatch e;
+  ASSERT_TRUE(std::regex_search(continuum, e, std::regex("set youngs modulus\\s*= ([^\n]*)")));
+  const double E = std::stod(e[1]);
+  continuum = std::regex_replace(continuum, std::regex("set youngs modulus\\s*= [^\n]*"),
+                                 "set youngs modulus = " + std::to_string(1.33 * E), std::regex_constants::format_first_only);
+  text = text.substr(0, section) + continuum;
+  text = std::regex_replace(text, std::regex("set directory = [^\n]*"), "set directory = " + (s.dir / "cal").string());
+  const fs::path bad = s.dir / "no-targets.prm";
+  std::ofstream(bad) << text;
+  text += "subsection calibration\n  set targets = " + (s.dir / "target/material-point.h5").string() +
+          "\n  set free parameters = E\n  set starting values = case\nend\n";
+  const fs::path c = s.dir / "cal.prm";
+  std::ofstream(c) << text;
+  ASSERT_EQ(run(exe + "calibrate '" + c.string() + "' > '" + (s.dir / "o2").string() + "' 2>&1"), 0)
+    << read(s.dir / "o2");
+  const std::string fragment = read(s.dir / "cal/calibration/calibrated.prm");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(fragment, m, std::regex("set youngs modulus  = ([^\n]*)"))) << fragment;
+  EXPECT_NEAR(std::stod(m[1]) / E, 1.0, 1e-6);
+  EXPECT_TRUE(fs::exists(s.dir / "cal/calibration/index.html"));
+  EXPECT_TRUE(fs::exists(s.dir / "cal/calibration/fit.json"));
+  // A case that includes the calibrated section parses (deal.II's `include`).
+  const fs::path inc = s.dir / "includes.prm";
+  std::ofstream(inc) << read(t) << "include " << (s.dir / "cal/calibration/calibrated.prm").string() << "\n";
+  EXPECT_EQ(run(exe + "check '" + inc.string() + "' > /dev/null 2>&1"), 0);
+  // No targets: exit 2 naming the parameter, nothing written.
+  ASSERT_EQ(run(exe + "calibrate '" + bad.string() + "' > '" + (s.dir / "o3").string() + "' 2>&1"), 2);
+  EXPECT_NE(read(s.dir / "o3").find("calibration/targets"), std::string::npos) << read(s.dir / "o3");
+}

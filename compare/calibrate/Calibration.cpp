@@ -1,0 +1,228 @@
+#include "compare/calibrate/Calibration.h"
+
+#include "continuum/driver/CaseMaterial.h"
+
+#include <ceres/ceres.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace geocomp::calibration {
+
+namespace {
+
+/// All residuals of all targets for the scaled parameters x (p_i = s_i x_i).
+struct Residuals {
+  const ContinuumParameters *base;
+  const FreeParameters *free;
+  const std::vector<FitTarget> *targets;
+  std::vector<double> scale;
+  double volumetric_weight;
+
+  bool operator()(double const *const *x, double *r) const
+  {
+    std::vector<double> p(scale.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+      p[i] = scale[i] * x[0][i];
+    continuum::MaterialParameters m;
+    try {
+      m = continuum::material_from_case(free->apply(*base, p));
+    } catch (const std::exception &) {
+      return false; // outside the model's range: Ceres shrinks the step
+    }
+    // The targets are independent runs: one thread each, each writing its own rows.
+    const std::vector<FitTarget> &ts = *targets;
+    std::vector<std::size_t> offset(ts.size() + 1, 0);
+    for (std::size_t k = 0; k < ts.size(); ++k)
+      offset[k + 1] = offset[k] + residual_count(ts[k]);
+    int failed = 0;
+#pragma omp parallel for schedule(dynamic) reduction(+ : failed)
+    for (std::size_t k = 0; k < ts.size(); ++k) {
+      try {
+        residuals(ts[k], simulate(ts[k], m), volumetric_weight, r + offset[k]);
+      } catch (const std::exception &) {
+        ++failed; // the driver failed for these values
+      }
+    }
+    return failed == 0;
+  }
+};
+
+using CostFunction = ceres::DynamicNumericDiffCostFunction<Residuals, ceres::CENTRAL>;
+
+CostFunction *make_cost(const Residuals &r, std::size_t n, std::size_t m)
+{
+  auto *f = new CostFunction(new Residuals(r));
+  f->AddParameterBlock(int(n));
+  f->SetNumResiduals(int(m));
+  return f;
+}
+
+/// Jacobian (m x n) of the residuals at x; false if the model fails there.
+bool jacobian(const CostFunction &f, const std::vector<double> &x, std::size_t m, Eigen::MatrixXd &J)
+{
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Jr(m, x.size());
+  std::vector<double> r(m);
+  const double *params[] = {x.data()};
+  double *jacs[] = {Jr.data()};
+  if (!f.Evaluate(params, r.data(), jacs))
+    return false;
+  J = Jr;
+  return true;
+}
+
+void throw_if_unidentifiable(const Identifiability &id, const char *when)
+{
+  if (id.ok())
+    return;
+  std::string names;
+  for (const auto &p : id.parameters)
+    names += (names.empty() ? "" : ", ") + p;
+  throw CalibrationError(id.parameters.front(),
+                         "the targets cannot identify " +
+                           std::string(id.parameters.size() > 1 ? "the parameters " : "the parameter ") + names + " (" +
+                           when + ": the residuals change with " +
+                           (id.parameters.size() > 1 ? "only a combination of them" : "it by nothing measurable") +
+                           "); fix " + (id.parameters.size() > 1 ? "one of them" : "it") +
+                           " or add a target that sees it (e.g. an axial test for nu, a curve past the peak "
+                           "for the softening knots)");
+}
+} // namespace
+
+Identifiability check_identifiability(const Eigen::MatrixXd &J, const std::vector<FreeParameter> &parameters,
+                                      double threshold)
+{
+  Identifiability id;
+  Eigen::MatrixXd Jn = J;
+  std::vector<bool> dead(J.cols(), false);
+  for (Eigen::Index j = 0; j < J.cols(); ++j) {
+    const double norm = J.col(j).norm();
+    if (!(norm > 0.0)) {
+      dead[j] = true;
+      id.parameters.push_back(parameters[j].name);
+      continue;
+    }
+    Jn.col(j) /= norm;
+  }
+  if (!id.parameters.empty()) {
+    id.ratio = 0.0;
+    return id;
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
+  const Eigen::VectorXd &s = svd.singularValues();
+  id.ratio = s(s.size() - 1) / s(0);
+  if (id.ratio < threshold) {
+    const Eigen::VectorXd v = svd.matrixV().col(s.size() - 1);
+    for (Eigen::Index j = 0; j < v.size(); ++j)
+      if (std::abs(v(j)) > 0.3)
+        id.parameters.push_back(parameters[j].name);
+  }
+  return id;
+}
+
+CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<FitTarget> &targets,
+                            const CalibrationParameters &options)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  if (targets.empty())
+    throw CalibrationError("calibration/targets", "no target curve to fit");
+  const FreeParameters free(start, options);
+  CalibrationResult out;
+  out.parameters = free.list();
+  out.start = free.values(start);
+  const std::size_t n = free.size();
+  std::size_t m = 0;
+  for (const auto &t : targets)
+    m += residual_count(t);
+  out.residuals = m;
+  if (m <= n)
+    throw CalibrationError("calibration/targets", "fewer residuals than free parameters");
+
+  Residuals functor{&start, &free, &targets, std::vector<double>(n), options.volumetric_weight};
+  std::vector<double> x(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const FreeParameter &p = out.parameters[i];
+    double s = std::abs(out.start[i]);
+    if (!(s > 0.0))
+      s = std::max(std::abs(p.upper), std::abs(p.lower)) > 0 ? 0.1 * (p.upper - p.lower) : 1.0;
+    if (p.family == FreeParameter::Family::Friction || p.family == FreeParameter::Family::Dilatancy)
+      s = std::max(s, 1.0); // degrees: a unit step is a fair scale near zero
+    functor.scale[i] = s;
+    x[i] = std::clamp(out.start[i], p.lower, p.upper) / s;
+  }
+
+  CostFunction *cost = make_cost(functor, n, m);
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, nullptr, x.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    problem.SetParameterLowerBound(x.data(), int(i), out.parameters[i].lower / functor.scale[i]);
+    problem.SetParameterUpperBound(x.data(), int(i), out.parameters[i].upper / functor.scale[i]);
+  }
+
+  Eigen::MatrixXd J;
+  if (!jacobian(*cost, x, m, J))
+    throw CalibrationError("calibration", "the material point fails at the starting values; check the continuum section");
+  throw_if_unidentifiable(check_identifiability(J, out.parameters), "at the starting values");
+
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = int(options.max_iterations);
+  so.function_tolerance = 1e-15;
+  so.gradient_tolerance = 1e-15;
+  so.parameter_tolerance = 1e-13;
+  so.logging_type = ceres::SILENT;
+  so.num_threads = 1;
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  out.initial_cost = summary.initial_cost;
+  out.final_cost = summary.final_cost;
+  out.iterations = int(summary.iterations.size()) - 1;
+  out.summary = summary.BriefReport();
+  if (!summary.IsSolutionUsable())
+    throw std::runtime_error("calibration: Ceres found no usable solution: " + summary.message);
+
+  out.value.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    out.value[i] = functor.scale[i] * x[i];
+  out.calibrated = free.apply(start, out.value);
+
+  if (!jacobian(*cost, x, m, J))
+    throw std::runtime_error("calibration: the material point fails at the solution");
+  throw_if_unidentifiable(check_identifiability(J, out.parameters), "at the solution");
+
+  // Covariance of x from Ceres, scaled by the residual variance, then to p.
+  out.standard_error.assign(n, std::nan(""));
+  out.correlation = Eigen::MatrixXd::Constant(n, n, std::nan(""));
+  ceres::Covariance::Options co;
+  co.algorithm_type = ceres::DENSE_SVD;
+  co.null_space_rank = 0;
+  ceres::Covariance covariance(co);
+  std::vector<std::pair<const double *, const double *>> blocks = {{x.data(), x.data()}};
+  if (covariance.Compute(blocks, &problem)) {
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> C(n, n);
+    covariance.GetCovarianceBlock(x.data(), x.data(), C.data());
+    const double s2 = 2.0 * out.final_cost / double(m - n);
+    for (std::size_t i = 0; i < n; ++i)
+      out.standard_error[i] = functor.scale[i] * std::sqrt(std::max(0.0, s2 * C(i, i)));
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        out.correlation(i, j) = C(i, j) / std::sqrt(C(i, i) * C(j, j));
+  } else {
+    out.notes.push_back("covariance not computed (Ceres: rank-deficient Jacobian)");
+  }
+
+  const continuum::MaterialParameters material = continuum::material_from_case(out.calibrated);
+  for (const auto &t : targets) {
+    out.fitted.push_back(simulate(t, material));
+    std::vector<double> r(residual_count(t));
+    residuals(t, out.fitted.back(), 0.0, r.data());
+    double sum = 0.0;
+    for (std::size_t k = 0; k < r.size(); k += 2)
+      sum += r[k] * r[k];
+    out.rms_deviator.push_back(std::sqrt(sum / double(r.size() / 2)) / std::max(t.weight, 1e-300));
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+} // namespace geocomp::calibration

@@ -1,0 +1,110 @@
+#include "compare/calibrate/FreeParameters.h"
+
+#include <algorithm>
+#include <regex>
+
+namespace geocomp::calibration {
+
+namespace {
+using Family = FreeParameter::Family;
+
+struct FamilyInfo {
+  const char *name;
+  Family family;
+  double lower, upper; ///< default bounds (Pa, degrees)
+};
+const FamilyInfo families[] = {{"E", Family::E, 1e5, 1e12},
+                               {"nu", Family::Nu, 0.0, 0.49},
+                               {"cohesion", Family::Cohesion, 0.0, 1e9},
+                               {"friction", Family::Friction, 0.5, 85.0},
+                               {"dilatancy", Family::Dilatancy, 0.0, 60.0}};
+
+const HardeningTable *table_of(const ContinuumParameters &p, Family f)
+{
+  switch (f) {
+  case Family::Cohesion: return &p.cohesion;
+  case Family::Friction: return &p.friction_angle;
+  case Family::Dilatancy: return &p.dilatancy_angle;
+  default: return nullptr;
+  }
+}
+
+HardeningTable *table_of(ContinuumParameters &p, Family f)
+{
+  return const_cast<HardeningTable *>(table_of(static_cast<const ContinuumParameters &>(p), f));
+}
+} // namespace
+
+FreeParameters::FreeParameters(const ContinuumParameters &base, const CalibrationParameters &c)
+{
+  const std::regex form("(E|nu|cohesion|friction|dilatancy)(?:\\[([0-9]+)\\])?");
+  for (const auto &text : c.free_parameters) {
+    std::smatch m;
+    if (!std::regex_match(text, m, form))
+      throw CalibrationError(text, "'" + text + "' is not a parameter (E, nu, cohesion, friction, dilatancy, name[k])");
+    const std::string family = m[1];
+    const FamilyInfo &info = *std::find_if(std::begin(families), std::end(families),
+                                           [&](const FamilyInfo &f) { return family == f.name; });
+    FreeParameter p;
+    p.family = info.family;
+    p.lower = info.lower;
+    p.upper = info.upper;
+    for (const auto &b : c.bounds)
+      if (b.name == family) {
+        p.lower = b.lower;
+        p.upper = b.upper;
+      }
+    const HardeningTable *t = table_of(base, info.family);
+    std::vector<int> knots;
+    if (!t)
+      knots = {-1};
+    else if (m[2].matched)
+      knots = {std::stoi(m[2])};
+    else
+      for (std::size_t k = 0; k < t->points.size(); ++k)
+        knots.push_back(int(k));
+    for (int k : knots) {
+      if (t && (k < 0 || k >= int(t->points.size())))
+        throw CalibrationError(text, "'" + text + "': the " + family + " table has " +
+                                       std::to_string(t->points.size()) + " knots (0 ... " +
+                                       std::to_string(t->points.size() - 1) + ")");
+      p.knot = k;
+      p.name = t ? family + "[" + std::to_string(k) + "]" : family;
+      if (std::none_of(list_.begin(), list_.end(), [&](const FreeParameter &q) { return q.name == p.name; }))
+        list_.push_back(p);
+    }
+  }
+  if (list_.empty())
+    throw CalibrationError("free parameters", "no free parameter: nothing to calibrate");
+}
+
+std::vector<double> FreeParameters::values(const ContinuumParameters &p) const
+{
+  std::vector<double> v;
+  for (const auto &f : list_) {
+    if (f.family == Family::E)
+      v.push_back(p.youngs_modulus);
+    else if (f.family == Family::Nu)
+      v.push_back(p.poisson_ratio);
+    else
+      v.push_back(table_of(p, f.family)->points[f.knot].second);
+  }
+  return v;
+}
+
+ContinuumParameters FreeParameters::apply(const ContinuumParameters &p, const std::vector<double> &values) const
+{
+  ContinuumParameters out = p;
+  for (std::size_t i = 0; i < list_.size(); ++i) {
+    const FreeParameter &f = list_[i];
+    if (f.family == Family::E)
+      out.youngs_modulus = values[i];
+    else if (f.family == Family::Nu)
+      out.poisson_ratio = values[i];
+    else
+      table_of(out, f.family)->points[f.knot].second = values[i];
+  }
+  return out;
+}
+
+} // namespace geocomp::calibration

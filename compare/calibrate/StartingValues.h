@@ -1,0 +1,32 @@
+// @sect3{Closed-form starting values}
+//
+// Why it exists: Levenberg-Marquardt needs a start in the right basin, and the classic
+// hand calibration gives one. From the targets' metrics (compare::compute_metrics):
+//  - E from the initial slope: axial curves at constant lateral stress give E directly
+//    (sigma_z = E eps_z); isochoric shear gives G = d tau/d gamma, E = 2 G (1 + nu).
+//  - nu from the initial lateral-to-axial strain ratio of axial curves, nu = -d eps_x/d eps_z.
+//  - phi and c from the peak Mohr envelope: with peaks at two or more confinements, the
+//    least-squares line sigma_1 = N_phi sigma_3 + 2 c sqrt(N_phi) (compression positive)
+//    gives sin phi = (N_phi - 1)/(N_phi + 1) and c; with one, phi from c = 0.
+//  - psi from the volumetric slope around the peak (the metrics' dilatancy angle).
+// The tables keep their shape: each is scaled so that its largest knot takes the estimate.
+// Estimates that the targets cannot give (no axial curve for nu, no finite dilatancy)
+// leave the case's values.
+#pragma once
+
+#include "common/case/CaseParameters.h"
+#include "compare/calibrate/FitTarget.h"
+
+#include <string>
+#include <vector>
+
+namespace geocomp::calibration {
+
+struct StartingValues {
+  ContinuumParameters parameters;
+  std::vector<std::string> notes; ///< what was estimated from what
+};
+
+StartingValues closed_form_start(const ContinuumParameters &base, const std::vector<FitTarget> &targets);
+
+} // namespace geocomp::calibration

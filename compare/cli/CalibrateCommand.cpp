@@ -1,0 +1,135 @@
+// `geocomp calibrate <case>`: fit the continuum section to the case's target curves
+// (compare/calibrate, docs/calibration.md), optionally verified on the FE cube.
+#include "Commands.h"
+#include "Engines.h"
+
+#include "common/ProgramRunner.h"
+#include "compare/calibrate/Calibration.h"
+#include "compare/calibrate/FitReport.h"
+#include "compare/calibrate/StartingValues.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace geocomp::cli {
+
+namespace fs = std::filesystem;
+using namespace geocomp::calibration;
+
+namespace {
+/// The FE cube with the calibrated section on each target's program: the largest
+/// difference of q from the material-point fit, relative to the target's largest q.
+std::string verify_on_cube(const CaseDescription &c, const CalibrationResult &r, const std::vector<FitTarget> &targets,
+                           const fs::path &dir)
+{
+  std::ostringstream o;
+  o << "# FE cube (" << c.continuum.cells_per_edge << "^3 cells, Q" << c.continuum.degree
+    << ") against the calibrated material point and the target, per target\n"
+    << "# file\tmax|q_cube - q_point|/max q\tmax|q_cube - q_target|/max q\n";
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    CaseDescription cube_case = c;
+    cube_case.continuum = r.calibrated;
+    cube_case.program = targets[k].program;
+    cube_case.specimen.isotropic_pressure = -targets[k].initial_stress;
+    cube_case.output.fields = false;
+    auto engine = make_engine("continuum", cube_case, dir.string(), MPI_COMM_SELF);
+    const Response cube = ProgramRunner(cube_case.program, *engine).run();
+    std::vector<double> to_target(residual_count(targets[k]));
+    const FitTarget point =
+      make_target("point", r.fitted[k], targets[k].program, targets[k].initial_stress, targets[k].substeps, 1.0);
+    std::vector<double> rp(residual_count(point));
+    residuals(point, cube, 0.0, rp.data());
+    residuals(targets[k], cube, 0.0, to_target.data());
+    double dp = 0.0, dt = 0.0;
+    for (std::size_t i = 0; i < rp.size(); i += 2)
+      dp = std::max(dp, std::abs(rp[i]));
+    for (std::size_t i = 0; i < to_target.size(); i += 2)
+      dt = std::max(dt, std::abs(to_target[i]) / targets[k].weight);
+    o << targets[k].name << '\t' << dp << '\t' << dt << '\n';
+  }
+  return o.str();
+}
+} // namespace
+
+Command calibrate_command()
+{
+  Command cmd;
+  cmd.name = "calibrate";
+  cmd.summary = "fit the continuum parameters to target curves (e.g. DEM runs) with Ceres";
+  cmd.usage = "usage: geocomp calibrate <case> [--output DIR] [--verify]\n\n"
+              "Fits the free parameters of the case's continuum section (subsection calibration:\n"
+              "targets, free parameters, bounds, weights) to the main-path curves of the target results\n"
+              "files by least squares over the material point (Ceres, Levenberg-Marquardt), starting\n"
+              "from closed-form estimates. Writes <output>/calibration/: the calibrated section\n"
+              "(include it in case files), parameters.tsv, fit.json, index.html with the curves,\n"
+              "standard errors and correlations. --verify reruns the calibrated model on the FE cube\n"
+              "for each target's program and reports the differences (verification.tsv).\n"
+              "A parameter the targets cannot identify is named and the command exits with 2.\n";
+  cmd.run = [](const std::vector<std::string> &args) {
+    const Arguments a = Arguments::parse(args, {"output"}, {"verify"});
+    if (a.positional.size() != 1)
+      throw UsageError("expected exactly one case file");
+    CaseDescription c;
+    std::vector<FitTarget> targets;
+    try {
+      c = read_case(a.positional[0]);
+      if (c.calibration.targets.empty())
+        throw CaseError(c.file, "calibration/targets", "expected at least one results file to fit");
+      for (std::size_t k = 0; k < c.calibration.targets.size(); ++k) {
+        const std::string &f = c.calibration.targets[k];
+        if (!fs::exists(f))
+          throw CaseError(c.file, "calibration/targets",
+                          "'" + f + "' does not exist (run the target case first, e.g. `geocomp dem <case>`)");
+        try {
+          targets.push_back(load_target(f, c.calibration.weights.empty() ? 1.0 : c.calibration.weights[k]));
+        } catch (const CalibrationError &e) {
+          throw CaseError(c.file, "calibration/targets", e.what());
+        }
+      }
+    } catch (const CaseError &e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return static_cast<int>(bad_input);
+    }
+    const fs::path dir = (a.has("output") ? fs::path(a.get("output")) : fs::path(c.output.directory)) / "calibration";
+    try {
+      ContinuumParameters start = c.continuum;
+      std::vector<std::string> notes;
+      if (c.calibration.starting_values == "closed-form") {
+        StartingValues s = closed_form_start(c.continuum, targets);
+        start = s.parameters;
+        notes = s.notes;
+      }
+      CalibrationResult r = calibrate(start, targets, c.calibration);
+      r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
+      write_fit_report(dir, c.calibration.output_file, r, targets, c.file);
+      std::cout << "calibrate: " << r.iterations << " iterations, " << r.seconds << " s, cost " << r.initial_cost
+                << " -> " << r.final_cost << "\n";
+      for (std::size_t i = 0; i < r.parameters.size(); ++i)
+        std::cout << "  " << r.parameters[i].name << " = " << r.value[i] << " +- " << r.standard_error[i]
+                  << "  (start " << r.start[i] << ")\n";
+      std::cout << "calibrated section: " << (dir / c.calibration.output_file).string() << "\nreport: "
+                << (dir / "index.html").string() << "\n";
+      if (a.has("verify")) {
+        ensure_mpi();
+        const std::string v = verify_on_cube(c, r, targets, dir);
+        std::ofstream(dir / "verification.tsv") << v;
+        std::cout << v;
+      }
+      return static_cast<int>(ok);
+    } catch (const CalibrationError &e) {
+      std::cerr << "error: " << c.file << ": parameter '" << e.parameter << "': " << e.what() << "\n";
+      return static_cast<int>(bad_input);
+    } catch (const std::exception &e) {
+      std::cerr << "run failed: " << e.what() << "\n";
+      return static_cast<int>(run_failure);
+    }
+  };
+  return cmd;
+}
+
+} // namespace geocomp::cli

@@ -1,0 +1,14 @@
+// The continuum section of a case file as the material the engines take: tables in the
+// case's units (Pa, degrees) to MohrCoulombParameters (Pa, radians) and the Drucker-Prager
+// matching. Shared by the command line and the calibration, which varies the section.
+#pragma once
+
+#include "common/case/CaseParameters.h"
+#include "continuum/driver/Materials.h"
+
+namespace geocomp::continuum {
+
+/// Throws std::invalid_argument when a value is out of the model's range.
+MaterialParameters material_from_case(const ContinuumParameters &p);
+
+} // namespace geocomp::continuum
