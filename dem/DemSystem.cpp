@@ -78,6 +78,48 @@ void DemSystem::set_position(ParticleId id, const Vec3& x)
   invalidate();
 }
 
+namespace {
+/// Radius, mass (constant density) and inverse mass and inertia of storage index k;
+/// returns the increase of the radius.
+double change_radius(ParticleStore& p, Index k, double radius)
+{
+  if (!(radius > 0.0) || !std::isfinite(radius)) throw std::invalid_argument("DemSystem::set_radius: radius must be positive");
+  const double r_old = p.radius[k];
+  const double ratio = radius / r_old;
+  const double mass = p.mass[k] * ratio * ratio * ratio;  // constant density
+  p.radius[k] = radius;
+  p.mass[k] = mass;
+  if (!p.is_fixed(k)) {
+    p.inv_mass[k] = 1.0 / mass;
+    p.inv_inertia[k] = 1.0 / (0.4 * mass * radius * radius);  // sphere: I = 2/5 m R^2
+  }
+  return radius - r_old;
+}
+}  // namespace
+
+void DemSystem::set_radius(ParticleId id, double radius)
+{
+  radius_growth_ += std::max(0.0, change_radius(store_, index_of_.at(id), radius));
+  invalidate();
+}
+
+void DemSystem::set_radii(const std::vector<double>& radii)
+{
+  if (radii.size() != index_of_.size()) throw std::invalid_argument("DemSystem::set_radii: one radius per particle");
+  double growth = 0.0;
+  for (ParticleId id = 0; id < radii.size(); ++id)
+    growth = std::max(growth, change_radius(store_, index_of_[id], radii[id]));
+  radius_growth_ += growth;  // a bound on each particle's increase since the build
+  invalidate();
+}
+
+void DemSystem::set_overdamped(double beta)
+{
+  if (!(beta >= 0.0)) throw std::invalid_argument("DemSystem::set_overdamped: beta must be >= 0");
+  overdamped_ = beta;
+  invalidate();
+}
+
 void DemSystem::set_velocity(ParticleId id, const Vec3& v)
 {
   store_.v.at(index_of_.at(id)) = v;
@@ -180,7 +222,18 @@ void DemSystem::rebuild()
 {
   if (search_.rebuild(store_, walls_, lists_, threads_)) refresh_index();
   rebuild_requested_ = false;
+  radius_growth_ = 0.0;
+  moved2_ = 0.0;
 }
+
+namespace {
+/// The displacement the rebuild criterion sees: motion plus radius growth since the build.
+inline double with_growth(double max_d2, double growth)
+{
+  const double d = std::sqrt(max_d2) + growth;
+  return d * d;
+}
+}  // namespace
 
 void DemSystem::prepare()
 {
@@ -189,7 +242,9 @@ void DemSystem::prepare()
     for (double r : store_.radius) r_max = std::max(r_max, r);
     search_.set_skin(r_max > 0.0 ? 0.2 * r_max : 1.0);  // 0.1 of the largest diameter
   }
-  if (rebuild_requested_) rebuild();
+  if (rebuild_requested_ ||
+      (radius_growth_ > 0.0 && search_.needs_rebuild(with_growth(moved2_, radius_growth_), walls_)))
+    rebuild();
   if (!ready_) {
     compute_forces(0.0);  // forces at the current state, histories not advanced
     ready_ = true;
@@ -256,6 +311,41 @@ double DemSystem::kick_drift(double dt)
   return max_d2;
 }
 
+double DemSystem::drift_overdamped(double dt)
+{
+  // S0 "Aristotelian" packing dynamics: v = F / gamma with gamma = m / (beta dt).
+  const std::size_t n = store_.size();
+  const std::size_t nb = n_blocks(n);
+  const double mobility = overdamped_ * dt;
+  const std::vector<Vec3>& x_ref = search_.reference_positions();
+  block_losses_.assign(2 * nb, 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (std::int64_t b = 0; b < std::int64_t(nb); ++b) {
+    double loss = 0.0, max_d2 = 0.0;
+    const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
+    for (std::size_t p = std::size_t(b) * kBlock; p < end; ++p) {
+      if (store_.inv_mass[p] != 0.0) {  // kinematic particles keep their set velocity
+        store_.v[p] = (mobility * store_.inv_mass[p]) * store_.force[p];
+        store_.omega[p] = (mobility * store_.inv_inertia[p]) * store_.torque[p];
+        loss += dt * (store_.force[p].dot(store_.v[p]) + store_.torque[p].dot(store_.omega[p]));
+      }
+      const Vec3 x = store_.x[p] + dt * store_.v[p];
+      store_.x[p] = x;
+      rotate_orientation(store_.orientation[p], store_.omega[p], dt);
+      max_d2 = std::max(max_d2, (x - x_ref[p]).squaredNorm());
+    }
+    block_losses_[2 * b] = loss;
+    block_losses_[2 * b + 1] = max_d2;
+  }
+  double loss = 0.0, max_d2 = 0.0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    loss += block_losses_[2 * b];
+    max_d2 = std::max(max_d2, block_losses_[2 * b + 1]);
+  }
+  losses_.dissipated_local += loss;
+  return max_d2;
+}
+
 void DemSystem::step()
 {
   if (!(dt_ > 0.0)) throw std::logic_error("DemSystem::step: time step not set");
@@ -263,11 +353,12 @@ void DemSystem::step()
   wall_force_old_.resize(walls_.size());
   for (std::size_t w = 0; w < walls_.size(); ++w) wall_force_old_[w] = walls_[w].force;
 
-  const double max_d2 = kick_drift(dt_);
+  const double max_d2 = overdamped_ > 0.0 ? drift_overdamped(dt_) : kick_drift(dt_);
+  moved2_ = max_d2;
   for (PlaneWall& w : walls_) w.point += dt_ * w.velocity;
-  if (rebuild_requested_ || search_.needs_rebuild(max_d2, walls_)) rebuild();
+  if (rebuild_requested_ || search_.needs_rebuild(with_growth(max_d2, radius_growth_), walls_)) rebuild();
   compute_forces(dt_);
-  losses_.dissipated_local += kick(dt_);
+  if (overdamped_ == 0.0) losses_.dissipated_local += kick(dt_);
 
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     PlaneWall& w = walls_[k];
@@ -565,7 +656,7 @@ EnergyLedger DemSystem::energy() const
 void DemSystem::write_state(std::ostream& out) const
 {
   static_assert(std::is_trivially_copyable_v<ContactModel>, "ContactModel is stored as its bytes");
-  binary::put_tag(out, "DEMSYSTM", 1);
+  binary::put_tag(out, "DEMSYSTM", 2);
   binary::put<std::uint64_t>(out, sizeof(ContactModel));
   binary::put(out, model_);
   const ParticleStore& p = store_;
@@ -598,6 +689,9 @@ void DemSystem::write_state(std::ostream& out) const
   binary::put(out, track_energy_);
   binary::put(out, ready_);
   binary::put(out, rebuild_requested_);
+  binary::put(out, overdamped_);
+  binary::put(out, radius_growth_);
+  binary::put(out, moved2_);
   binary::put(out, time_);
   binary::put(out, steps_);
   binary::put(out, losses_);
@@ -607,7 +701,7 @@ void DemSystem::write_state(std::ostream& out) const
 
 void DemSystem::read_state(std::istream& in)
 {
-  binary::expect_tag(in, "DEMSYSTM", 1);
+  binary::expect_tag(in, "DEMSYSTM", 2);
   std::uint64_t model_size = 0;
   binary::get(in, model_size);
   if (model_size != sizeof(ContactModel)) throw binary::StateError("checkpoint: contact law written by another build");
@@ -647,6 +741,9 @@ void DemSystem::read_state(std::istream& in)
   binary::get(in, track_energy_);
   binary::get(in, ready_);
   binary::get(in, rebuild_requested_);
+  binary::get(in, overdamped_);
+  binary::get(in, radius_growth_);
+  binary::get(in, moved2_);
   binary::get(in, time_);
   binary::get(in, steps_);
   binary::get(in, losses_);

@@ -94,6 +94,15 @@ public:
   Vec3 force(ParticleId id) const { return store_.force[index_of_[id]]; }
   Vec3 torque(ParticleId id) const { return store_.torque[index_of_[id]]; }
   Quat orientation(ParticleId id) const { return store_.orientation[index_of_[id]]; }
+  /// Changes a sphere's radius at constant density: mass $m (R'/R)^3$, inertia
+  /// $\tfrac25 m' R'^2$ (a kinematic particle stays kinematic). For radius growth (S0
+  /// packing): the lists stay valid through growth, since a rebuild follows when
+  /// $\max|\Delta x| + \max \Delta R > s/2$ since the last build (DEM-NOTES section 5).
+  /// Forces are recomputed with the new radii before the next step.
+  void set_radius(ParticleId id, double radius);
+  /// All radii at once, `radii[id]` (same rules as set_radius; the rebuild criterion
+  /// counts the largest increase of the batch once).
+  void set_radii(const std::vector<double>& radii);
 
   // --- walls
   std::size_t add_wall(const PlaneWall& w);
@@ -124,6 +133,13 @@ public:
   void set_gravity(const Vec3& g) { gravity_ = g; invalidate(); }
   /// Cundall local damping coefficient lambda_d (0: off, default).
   void set_local_damping(double lambda) { local_damping_ = lambda; }
+  /// First-order ("Aristotelian", S0 packing; Klishin & Mikenina 2021) dynamics when
+  /// beta > 0: each step sets $v = \beta\,\Delta t\,F/m$, $\omega = \beta\,\Delta t\,T/I$ and drifts
+  /// $x \mathrel{+}= \Delta t\,v$ (overdamped, no inertia: explicit steepest descent, stable for
+  /// $\beta\,\Delta t^2 k_{eff}/m < 2$). Local damping does not apply; the power $F\cdot v + T\cdot\omega$
+  /// is counted as dissipated_local. beta = 0 (default): velocity Verlet.
+  void set_overdamped(double beta);
+  double overdamped() const { return overdamped_; }
   /// Accumulate dissipated energy every step (small cost; off by default).
   void set_energy_tracking(bool on) { track_energy_ = on; }
   /// Reorder particle storage by cell at rebuilds (default on).
@@ -172,6 +188,7 @@ private:
   void compute_forces_with(const Law& law, double dt_history);
   double kick(double dt);
   double kick_drift(double dt);
+  double drift_overdamped(double dt);
   void refresh_index();
 
   ParticleStore store_;
@@ -189,6 +206,9 @@ private:
   bool track_energy_ = false;
   bool ready_ = false;
   bool rebuild_requested_ = true;
+  double overdamped_ = 0.0;      // beta of first-order dynamics (0: Newtonian)
+  double radius_growth_ = 0.0;   // bound on any radius increase since the last build
+  double moved2_ = 0.0;          // largest squared displacement since the last build (last step)
 
   double time_ = 0.0;
   std::uint64_t steps_ = 0;

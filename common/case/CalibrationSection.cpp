@@ -4,13 +4,13 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
 namespace geocomp::sections {
 
 using dealii::Patterns::Anything;
-using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::Selection;
 
@@ -32,8 +32,12 @@ void declare_calibration(dealii::ParameterHandler &prm)
                     "Start from closed-form estimates from the target curves (E, nu from the initial slopes, "
                     "phi and c from the peak Mohr envelope, psi from the volumetric slope) or from the "
                     "continuum section's values.");
-  prm.declare_entry("volumetric weight", "1", Double(0, 1e6),
-                    "Weight of the volumetric-strain residuals relative to the deviator-stress residuals.");
+  prm.declare_entry("quantities", "q, eps_v", Anything(),
+                    "Response quantities compared at every main-path sample of every target, each "
+                    "optionally with a weight as name:weight (default 1): q (deviator stress sqrt(3 J2), "
+                    "scaled by the target's largest q), p (mean stress, scaled by the same largest q; the "
+                    "quantity that shows dilatancy in isochoric shear), eps_v (volumetric strain, scaled by "
+                    "its range, at least 1e-3).");
   prm.declare_entry("max iterations", "100", Integer(1, 100000), "Levenberg-Marquardt iterations at most.");
   prm.declare_entry("output file", "calibrated.prm", Anything(),
                     "The calibrated 'subsection continuum' fragment, written to <output directory>/calibration/; "
@@ -41,16 +45,18 @@ void declare_calibration(dealii::ParameterHandler &prm)
   prm.leave_subsection();
 }
 
-CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Reader &r)
+CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Reader &r,
+                                        const ContinuumParameters &continuum)
 {
   CalibrationParameters p;
+  p.quantities.clear();
   prm.enter_subsection("calibration");
   p.targets = dealii::Utilities::split_string_list(prm.get("targets"));
   const std::vector<std::string> weights = dealii::Utilities::split_string_list(prm.get("weights"));
   p.free_parameters = dealii::Utilities::split_string_list(prm.get("free parameters"));
   const std::string bounds = prm.get("bounds");
   p.starting_values = prm.get("starting values");
-  p.volumetric_weight = prm.get_double("volumetric weight");
+  const std::vector<std::string> quantities = dealii::Utilities::split_string_list(prm.get("quantities"));
   p.max_iterations = prm.get_integer("max iterations");
   p.output_file = prm.get("output file");
   prm.leave_subsection();
@@ -65,11 +71,47 @@ CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Rea
   if (!p.weights.empty() && p.weights.size() != p.targets.size())
     r.fail("calibration/weights", "expected one weight per target (" + std::to_string(p.targets.size()) +
                                     "), got " + std::to_string(p.weights.size()));
-  const std::regex name("(E|nu|cohesion|friction|dilatancy)(\\[[0-9]+\\])?");
-  for (const auto &f : p.free_parameters)
-    if (!std::regex_match(f, name))
+  const std::regex name("(E|nu|cohesion|friction|dilatancy)(?:\\[([0-9]+)\\])?");
+  for (const auto &f : p.free_parameters) {
+    std::smatch m;
+    if (!std::regex_match(f, m, name))
       r.fail("calibration/free parameters",
              "'" + f + "' is not a parameter (expected E, nu, cohesion, friction, dilatancy or name[k])");
+    const std::string family = m[1];
+    const HardeningTable *table = family == "cohesion"   ? &continuum.cohesion
+                                  : family == "friction" ? &continuum.friction_angle
+                                  : family == "dilatancy" ? &continuum.dilatancy_angle
+                                                          : nullptr;
+    if (m[2].matched && !table)
+      r.fail("calibration/free parameters", "'" + f + "': " + family + " is a number, not a table with knots");
+    if (m[2].matched && (m[2].length() > 6 || std::stoul(m[2].str()) >= table->points.size()))
+      r.fail("calibration/free parameters", "'" + f + "': the continuum " + family + " table has " +
+                                              std::to_string(table->points.size()) + " knots (0 ... " +
+                                              std::to_string(table->points.size() - 1) + ")");
+  }
+  if (p.free_parameters.empty())
+    r.fail("calibration/free parameters", "expected at least one free parameter");
+  for (const auto &item : quantities) {
+    const std::regex form("(q|p|eps_v)\\s*(?::\\s*(\\S+))?");
+    std::smatch m;
+    FittedQuantity q;
+    if (std::regex_match(item, m, form)) {
+      q.name = m[1];
+      char *end = nullptr;
+      const std::string w = m[2].matched ? m[2].str() : "1";
+      q.weight = std::strtod(w.c_str(), &end);
+      const bool repeated = std::any_of(p.quantities.begin(), p.quantities.end(),
+                                        [&](const FittedQuantity &o) { return o.name == q.name; });
+      if (*end == '\0' && std::isfinite(q.weight) && q.weight > 0.0 && !repeated) {
+        p.quantities.push_back(q);
+        continue;
+      }
+    }
+    r.fail("calibration/quantities",
+           "'" + item + "' is not a fitted quantity (expected q, p or eps_v, each once, optionally as name:weight with weight > 0)");
+  }
+  if (p.quantities.empty())
+    r.fail("calibration/quantities", "expected at least one of q, p, eps_v");
   for (const auto &item : dealii::Utilities::split_string_list(bounds, ';')) {
     const std::regex form("\\s*(E|nu|cohesion|friction|dilatancy)\\s*:\\s*(\\S+)\\s+(\\S+)\\s*");
     std::smatch m;

@@ -220,7 +220,7 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
     c.continuum = sections::parse_continuum(prm, reader);
     c.program = sections::parse_program(prm, stages, reader);
     c.output = sections::parse_output(prm, reader);
-    c.calibration = sections::parse_calibration(prm, reader);
+    c.calibration = sections::parse_calibration(prm, reader, c.continuum);
   } catch (const ExceptionBase &e) {
     const std::string msg = user_message(e.what(), path);
     throw CaseError(path, parameter_in(msg, prm_text), msg);

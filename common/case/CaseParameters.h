@@ -105,6 +105,13 @@ struct ParameterBounds {
   double lower = 0.0, upper = 0.0;
 };
 
+/// One response quantity fitted by `geocomp calibrate` and its weight: "q" (deviator
+/// sqrt(3 J2)), "p" (mean stress) or "eps_v" (volumetric strain).
+struct FittedQuantity {
+  std::string name;
+  double weight = 1.0;
+};
+
 /// What `geocomp calibrate` fits (docs/calibration.md).
 struct CalibrationParameters {
   std::vector<std::string> targets;     ///< results files (.h5) of the curves to fit, e.g. DEM runs
@@ -113,7 +120,7 @@ struct CalibrationParameters {
   std::vector<std::string> free_parameters{"E", "nu", "cohesion", "friction", "dilatancy"};
   std::vector<ParameterBounds> bounds;  ///< overrides of the default bounds
   std::string starting_values = "closed-form"; ///< closed-form | case
-  double volumetric_weight = 1.0;       ///< weight of volumetric-strain residuals against stress ones
+  std::vector<FittedQuantity> quantities{{"q", 1.0}, {"eps_v", 1.0}}; ///< residuals at each sample
   unsigned int max_iterations = 100;
   std::string output_file = "calibrated.prm"; ///< inside the output directory's calibration/ folder
 };

@@ -29,7 +29,9 @@ void declare_output(dealii::ParameterHandler &prm);
 OutputParameters parse_output(dealii::ParameterHandler &prm, const Reader &r);
 
 void declare_calibration(dealii::ParameterHandler &prm);
-CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Reader &r);
+/// Needs the parsed continuum section: a free table knot must exist in its table.
+CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Reader &r,
+                                        const ContinuumParameters &continuum);
 
 /// "0:1e5, 0.02:1.2e5" -> table; fails naming `parameter`.
 HardeningTable parse_table(const std::string &text, const std::string &parameter, const Reader &r);

@@ -27,13 +27,23 @@
 
 namespace geocomp::calibration {
 
+/// How far one fitted curve stays from its target in one quantity, relative to the
+/// quantity's scale (FitTarget.h) and without weights.
+struct ResidualSummary {
+  std::string quantity;    ///< "q", "p", "eps_v"
+  bool fitted = false;     ///< among the calibration's quantities
+  double rms = 0.0, max_abs = 0.0;
+  std::vector<double> values; ///< per fitted sample of the target
+};
+
 struct CalibrationResult {
   std::vector<FreeParameter> parameters;
   std::vector<double> start, value, standard_error;
   Eigen::MatrixXd correlation;
   ContinuumParameters calibrated;
   std::vector<Response> fitted;      ///< the material point with the calibrated values, per target
-  std::vector<double> rms_deviator;  ///< per target, relative to its largest q
+  std::vector<ResidualQuantity> quantities;  ///< the fitted ones, with their weights
+  std::vector<std::vector<ResidualSummary>> residual_summary; ///< per target: q, p, eps_v
   double initial_cost = 0.0, final_cost = 0.0;
   std::size_t residuals = 0;
   int iterations = 0;

@@ -1,5 +1,6 @@
 #include "compare/calibrate/FitReport.h"
 
+#include "common/AtomicFile.h"
 #include "common/Tensor.h"
 #include "compare/Metrics.h"
 
@@ -44,6 +45,242 @@ double abscissa(const ResponseSample &s, compare::CurveKind kind)
 {
   return 100.0 * (kind == compare::CurveKind::AxialLateral ? -s.strain(2, 2) : gamma_max(s.strain));
 }
+
+std::string json_string(const std::string &s)
+{
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\u%04x", c);
+      out += b;
+    } else
+      out += static_cast<char>(c);
+  }
+  return out + "\"";
+}
+
+std::string html_text(const std::string &s)
+{
+  std::string out;
+  for (char c : s)
+    out += c == '<' ? std::string("&lt;") : c == '>' ? std::string("&gt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
+  return out;
+}
+
+std::string fitted_names(const CalibrationResult &r)
+{
+  std::string s;
+  for (const auto &q : r.quantities)
+    s += (s.empty() ? "" : ", ") + q.name + (q.weight != 1.0 ? " (weight " + num(q.weight, 4) + ")" : "");
+  return s;
+}
+
+/// fit.json: everything in the HTML tables, machine-readable.
+std::string fit_json(const CalibrationResult &r, const std::vector<FitTarget> &targets, const std::string &case_file,
+                     const std::vector<Verification> &verification)
+{
+  const std::size_t n = r.parameters.size();
+  std::ostringstream json;
+  json << "{\n  \"format\": \"geocomp-calibration-2\",\n  \"case\": " << json_string(case_file) << ",\n"
+       << "  \"units\": \"Pa and degrees; residuals relative to the target's largest q (q, p) or eps_v range\",\n"
+       << "  \"quantities\": [";
+  for (std::size_t j = 0; j < r.quantities.size(); ++j)
+    json << (j ? ", " : "") << "{\"name\": " << json_string(r.quantities[j].name)
+         << ", \"weight\": " << num(r.quantities[j].weight) << "}";
+  json << "],\n  \"parameters\": [\n";
+  for (std::size_t i = 0; i < n; ++i)
+    json << "    {\"name\": " << json_string(r.parameters[i].name) << ", \"start\": " << num(r.start[i])
+         << ", \"value\": " << num(r.value[i]) << ", \"standard_error\": " << num(r.standard_error[i])
+         << ", \"lower\": " << num(r.parameters[i].lower) << ", \"upper\": " << num(r.parameters[i].upper) << "}"
+         << (i + 1 < n ? ",\n" : "\n");
+  json << "  ],\n  \"correlation\": [";
+  for (std::size_t i = 0; i < n; ++i) {
+    json << (i ? ", " : "") << "[";
+    for (std::size_t j = 0; j < n; ++j)
+      json << (j ? ", " : "") << num(r.correlation(i, j), 6);
+    json << "]";
+  }
+  json << "],\n  \"initial_cost\": " << num(r.initial_cost) << ",\n  \"final_cost\": " << num(r.final_cost)
+       << ",\n  \"residuals\": " << r.residuals << ",\n  \"iterations\": " << r.iterations
+       << ",\n  \"seconds\": " << num(r.seconds, 4) << ",\n  \"targets\": [\n";
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    json << "    {\"file\": " << json_string(targets[k].name) << ", \"weight\": " << num(targets[k].weight)
+         << ", \"samples\": " << targets[k].samples.size() << ", \"q_scale\": " << num(targets[k].q_scale)
+         << ", \"eps_v_scale\": " << num(targets[k].volume_scale) << ", \"residuals\": {";
+    const auto &rows = r.residual_summary[k];
+    for (std::size_t j = 0; j < rows.size(); ++j)
+      json << (j ? ", " : "") << json_string(rows[j].quantity) << ": {\"fitted\": " << (rows[j].fitted ? "true" : "false")
+           << ", \"rms\": " << num(rows[j].rms, 6) << ", \"max\": " << num(rows[j].max_abs, 6) << "}";
+    json << "}}" << (k + 1 < targets.size() ? ",\n" : "\n");
+  }
+  json << "  ],\n  \"verification\": [";
+  for (std::size_t k = 0; k < verification.size(); ++k)
+    json << (k ? "," : "") << "\n    {\"file\": " << json_string(verification[k].target)
+         << ", \"max_q_cube_vs_point\": " << num(verification[k].cube_vs_point, 6)
+         << ", \"max_q_cube_vs_target\": " << num(verification[k].cube_vs_target, 6)
+         << ", \"max_q_point_vs_target\": " << num(verification[k].point_vs_target, 6)
+         << ", \"cube_seconds\": " << num(verification[k].seconds, 4) << "}";
+  json << (verification.empty() ? "" : "\n  ") << "],\n  \"notes\": [";
+  for (std::size_t k = 0; k < r.notes.size(); ++k)
+    json << (k ? ", " : "") << json_string(r.notes[k]);
+  json << "]\n}\n";
+  return json.str();
+}
+
+/// Data files and the gnuplot script for fit_k.png and residuals_k.png; true if gnuplot ran.
+bool write_plots(const fs::path &dir, const CalibrationResult &r, const std::vector<FitTarget> &targets)
+{
+  fs::create_directories(dir / "data");
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 800,560 font 'sans,10'\nset grid lc rgb '#dddddd'\nset key top left box opaque\n";
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    const compare::CurveKind kind = compare::curve_kind_for(targets[k].program);
+    const bool axial = kind == compare::CurveKind::AxialLateral;
+    // Columns: x [%], q [MPa], -p [MPa] (compression positive), eps_v [%] (dilation +).
+    auto row = [&](const ResponseSample &s) {
+      std::ostringstream o;
+      o << abscissa(s, kind) << ' ' << deviator(s.stress) * 1e-6 << ' ' << -mean_stress(s.stress) * 1e-6 << ' '
+        << 100 * volumetric_strain(s.strain) << '\n';
+      return o.str();
+    };
+    std::ostringstream t, f, res;
+    for (std::size_t i = 0; i < targets[k].samples.size(); ++i) {
+      const ResponseSample &s = targets[k].response.samples[targets[k].samples[i]];
+      t << row(s);
+      res << abscissa(s, kind);
+      for (const auto &q : r.residual_summary[k])
+        res << ' ' << 100 * q.values[i];
+      res << '\n';
+    }
+    for (const auto &s : r.fitted[k].samples)
+      f << row(s);
+    const std::string id = std::to_string(k);
+    write_text(dir / "data" / ("target" + id + ".dat"), t.str());
+    write_text(dir / "data" / ("fit" + id + ".dat"), f.str());
+    write_text(dir / "data" / ("residuals" + id + ".dat"), res.str());
+    const std::string x = axial ? "-{/Symbol e}_{zz} [%]" : "{/Symbol g}_{max} [%]";
+    // Folder and file (results/<case>/dem.h5 -> <case>/dem.h5): the file names alone repeat.
+    const fs::path file(targets[k].name);
+    const std::string name = (file.parent_path().filename() / file.filename()).string();
+    gp << "set output 'fit" << id << ".png'\nset title 'target " << k + 1 << " (" << name
+       << ") and the calibrated material point' noenhanced\nset xlabel '" << x << "'\nset ylabel '" << (axial ? "q" : "q, -p") << " [MPa]'\n"
+       << (axial ? "set y2label '{/Symbol e}_v [%] (dilation +)'\nset y2tics\n" : "")
+       << "plot 'data/target" << id << ".dat' u 1:2 w p pt 7 ps 0.5 lc rgb '#2ca02c' t 'target q', "
+       << "'data/fit" << id << ".dat' u 1:2 w l lw 2 lc rgb '#d62728' t 'fit q'";
+    if (axial)
+      gp << ", 'data/target" << id << ".dat' u 1:4 axes x1y2 w p pt 6 ps 0.5 lc rgb '#1f77b4' t 'target {/Symbol e}_v', "
+         << "'data/fit" << id << ".dat' u 1:4 axes x1y2 w l lw 1 dt 2 lc rgb '#1f77b4' t 'fit {/Symbol e}_v'";
+    else
+      gp << ", 'data/target" << id << ".dat' u 1:3 w p pt 6 ps 0.5 lc rgb '#9467bd' t 'target -p', "
+         << "'data/fit" << id << ".dat' u 1:3 w l lw 1 dt 2 lc rgb '#9467bd' t 'fit -p'";
+    gp << "\n";
+    if (axial)
+      gp << "unset y2tics\nunset y2label\n";
+    gp << "set output 'residuals" << id << ".png'\nset title 'residuals along target " << k + 1 << " (" << name
+       << "), model - target' noenhanced\nset ylabel 'residual [% of scale]'\nplot ";
+    const auto &rows = r.residual_summary[k];
+    for (std::size_t j = 0; j < rows.size(); ++j)
+      gp << (j ? ", " : "") << "'data/residuals" << id << ".dat' u 1:" << j + 2 << " w lp ps 0.4 "
+         << (rows[j].fitted ? "lw 2" : "dt 2") << " t '" << rows[j].quantity << (rows[j].fitted ? " (fitted)" : "")
+         << "' noenhanced";
+    gp << "\n";
+  }
+  write_text(dir / "fit.gp", gp.str());
+  const std::string cmd = "cd '" + dir.string() + "' && gnuplot fit.gp > gnuplot.log 2>&1";
+  return std::system(cmd.c_str()) == 0;
+}
+
+std::string fit_html(const CalibrationResult &r, const std::vector<FitTarget> &targets, const std::string &case_file,
+                     const std::string &fragment_name, const std::vector<Verification> &verification, bool plots)
+{
+  const std::size_t n = r.parameters.size();
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Calibration: " << html_text(case_file)
+       << "</title><style>body{font-family:sans-serif;max-width:1100px;margin:2em auto}table{border-collapse:collapse}"
+          "td,th{border:1px solid #bbb;padding:3px 8px}td{text-align:right;font-family:monospace}img{max-width:49%}"
+          "</style></head><body>\n<h1>Calibration of the continuum parameters</h1>\n<p>Case <code>"
+       << html_text(case_file) << "</code>; " << targets.size() << " target curves, fitted quantities "
+       << fitted_names(r) << ", " << r.residuals << " residuals, " << r.iterations
+       << " Levenberg-Marquardt iterations, " << num(r.seconds, 3) << " s. Cost " << num(r.initial_cost, 6)
+       << " &rarr; " << num(r.final_cost, 6) << ". Units: Pa and degrees. "
+       << "Standard errors from the Jacobian covariance scaled by the residual variance. Numbers also in "
+          "<a href=\"fit.json\">fit.json</a>.</p>\n"
+       << "<table><tr><th>parameter</th><th>start</th><th>calibrated</th><th>standard error</th><th>bounds</th></tr>\n";
+  for (std::size_t i = 0; i < n; ++i)
+    html << "<tr><th>" << r.parameters[i].name << "</th><td>" << num(r.start[i], 6) << "</td><td>"
+         << num(r.value[i], 6) << "</td><td>" << num(r.standard_error[i], 3) << "</td><td>["
+         << num(r.parameters[i].lower, 3) << ", " << num(r.parameters[i].upper, 3) << "]</td></tr>\n";
+  html << "</table>\n<h2>Correlations</h2>\n<table><tr><th></th>";
+  for (std::size_t j = 0; j < n; ++j)
+    html << "<th>" << r.parameters[j].name << "</th>";
+  html << "</tr>\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    html << "<tr><th>" << r.parameters[i].name << "</th>";
+    for (std::size_t j = 0; j < n; ++j)
+      html << "<td>" << num(r.correlation(i, j), 3) << "</td>";
+    html << "</tr>\n";
+  }
+  html << "</table>\n<h2>Residuals</h2>\n<p>Model minus target at the target's samples, relative to the target's "
+          "largest q (q, p) or its eps_v range (eps_v), without weights; * marks the fitted quantities.</p>\n"
+          "<table><tr><th>target</th><th>weight</th>";
+  const std::vector<ResidualQuantity> all = all_quantities();
+  for (const auto &q : all)
+    html << "<th>rms " << q.name << "</th><th>max " << q.name << "</th>";
+  html << "</tr>\n";
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    html << "<tr><th>" << html_text(targets[k].name) << "</th><td>" << num(targets[k].weight, 4) << "</td>";
+    for (const auto &row : r.residual_summary[k])
+      html << "<td>" << num(row.rms, 4) << (row.fitted ? "*" : "") << "</td><td>" << num(row.max_abs, 4) << "</td>";
+    html << "</tr>\n";
+  }
+  html << "</table>\n";
+  if (!verification.empty()) {
+    html << "<h2>Verification on the deal.II cube</h2>\n<p>The calibrated section rerun on the finite-element cube "
+            "for each target's program; largest differences of q along the path, relative to the target's largest q."
+            "</p>\n<table><tr><th>target</th><th>cube vs material point</th><th>cube vs target</th>"
+            "<th>material point vs target</th><th>cube run [s]</th></tr>\n";
+    for (const auto &v : verification)
+      html << "<tr><th>" << html_text(v.target) << "</th><td>" << num(v.cube_vs_point, 3) << "</td><td>"
+           << num(v.cube_vs_target, 3) << "</td><td>" << num(v.point_vs_target, 3) << "</td><td>"
+           << num(v.seconds, 3) << "</td></tr>\n";
+    html << "</table>\n";
+  }
+  html << "<h2>Curves</h2>\n";
+  if (plots)
+    for (std::size_t k = 0; k < targets.size(); ++k)
+      html << "<img src=\"fit" << k << ".png\" alt=\"fit " << k << "\"><img src=\"residuals" << k
+           << ".png\" alt=\"residuals " << k << "\">\n";
+  else
+    html << "<p>(no plots: gnuplot failed, see gnuplot.log)</p>\n";
+  for (const auto &note : r.notes)
+    html << "<p>" << html_text(note) << "</p>\n";
+  html << "<p>Calibrated section: <code>" << html_text(fragment_name)
+       << "</code> (pull it into a case file with <code>include &lt;path&gt;</code> after its own continuum "
+          "section).</p>\n</body></html>\n";
+  return html.str();
+}
+
+void write_folder(const fs::path &dir, const std::string &fragment_name, const CalibrationResult &r,
+                  const std::vector<FitTarget> &targets, const std::string &case_file,
+                  const std::vector<Verification> &verification)
+{
+  write_text(dir / fragment_name,
+             continuum_fragment(r.calibrated, "calibrated by `geocomp calibrate " + case_file + "` (" +
+                                                std::to_string(targets.size()) + " target curves)"));
+  std::ostringstream tsv;
+  tsv << "# name\tstart\tvalue\tstandard_error\n";
+  for (std::size_t i = 0; i < r.parameters.size(); ++i)
+    tsv << r.parameters[i].name << '\t' << num(r.start[i]) << '\t' << num(r.value[i]) << '\t'
+        << num(r.standard_error[i]) << '\n';
+  write_text(dir / "parameters.tsv", tsv.str());
+  write_text(dir / "fit.json", fit_json(r, targets, case_file, verification));
+  const bool plots = write_plots(dir, r, targets);
+  write_text(dir / "index.html", fit_html(r, targets, case_file, fragment_name, verification, plots));
+}
 } // namespace
 
 std::string continuum_fragment(const ContinuumParameters &p, const std::string &comment)
@@ -61,117 +298,20 @@ std::string continuum_fragment(const ContinuumParameters &p, const std::string &
 }
 
 void write_fit_report(const fs::path &dir, const std::string &fragment_name, const CalibrationResult &r,
-                      const std::vector<FitTarget> &targets, const std::string &case_file)
+                      const std::vector<FitTarget> &targets, const std::string &case_file,
+                      const std::vector<Verification> &verification)
 {
-  const fs::path tmp = dir.string() + ".tmp";
-  fs::remove_all(tmp);
-  fs::create_directories(tmp);
-  const std::size_t n = r.parameters.size();
-
-  write_text(tmp / fragment_name,
-             continuum_fragment(r.calibrated, "calibrated by `geocomp calibrate " + case_file + "` (" +
-                                                std::to_string(targets.size()) + " target curves)"));
-  std::ostringstream tsv, json, html, gp;
-  tsv << "# name\tstart\tvalue\tstandard_error\n";
-  for (std::size_t i = 0; i < n; ++i)
-    tsv << r.parameters[i].name << '\t' << num(r.start[i]) << '\t' << num(r.value[i]) << '\t'
-        << num(r.standard_error[i]) << '\n';
-  write_text(tmp / "parameters.tsv", tsv.str());
-
-  json << "{\n  \"format\": \"geocomp-calibration-1\",\n  \"case\": \"" << case_file << "\",\n"
-       << "  \"units\": \"Pa and degrees\",\n  \"parameters\": [\n";
-  for (std::size_t i = 0; i < n; ++i)
-    json << "    {\"name\": \"" << r.parameters[i].name << "\", \"start\": " << num(r.start[i])
-         << ", \"value\": " << num(r.value[i]) << ", \"standard_error\": " << num(r.standard_error[i])
-         << ", \"lower\": " << num(r.parameters[i].lower) << ", \"upper\": " << num(r.parameters[i].upper) << "}"
-         << (i + 1 < n ? ",\n" : "\n");
-  json << "  ],\n  \"correlation\": [";
-  for (std::size_t i = 0; i < n; ++i) {
-    json << (i ? ", " : "") << "[";
-    for (std::size_t j = 0; j < n; ++j)
-      json << (j ? ", " : "") << num(r.correlation(i, j), 6);
-    json << "]";
-  }
-  json << "],\n  \"initial_cost\": " << num(r.initial_cost) << ",\n  \"final_cost\": " << num(r.final_cost)
-       << ",\n  \"residuals\": " << r.residuals << ",\n  \"iterations\": " << r.iterations
-       << ",\n  \"seconds\": " << num(r.seconds, 4) << ",\n  \"targets\": [\n";
-  for (std::size_t k = 0; k < targets.size(); ++k)
-    json << "    {\"file\": \"" << targets[k].name << "\", \"weight\": " << num(targets[k].weight)
-         << ", \"rms_deviator_relative\": " << num(r.rms_deviator[k], 6) << "}" << (k + 1 < targets.size() ? ",\n" : "\n");
-  json << "  ],\n  \"notes\": [";
-  for (std::size_t k = 0; k < r.notes.size(); ++k)
-    json << (k ? ", " : "") << "\"" << r.notes[k] << "\"";
-  json << "]\n}\n";
-  write_text(tmp / "fit.json", json.str());
-
-  // Curves: target points and fitted line, deviator q [MPa] against the curve's strain [%].
-  fs::create_directories(tmp / "data");
-  gp << "set terminal pngcairo size 800,560 font 'sans,10'\nset grid lc rgb '#dddddd'\nset key top left box opaque\n";
-  for (std::size_t k = 0; k < targets.size(); ++k) {
-    const compare::CurveKind kind = compare::curve_kind_for(targets[k].program);
-    std::ostringstream t, f;
-    for (std::size_t i : targets[k].samples) {
-      const ResponseSample &s = targets[k].response.samples[i];
-      t << abscissa(s, kind) << ' ' << deviator(s.stress) * 1e-6 << ' ' << 100 * volumetric_strain(s.strain) << '\n';
+  write_atomically(dir, [&](const fs::path &tmp) {
+    try {
+      fs::create_directories(tmp);
+      write_folder(tmp, fragment_name, r, targets, case_file, verification);
+      fs::remove_all(dir); // the previous report, replaced as a whole
+    } catch (...) {
+      std::error_code ec;
+      fs::remove_all(tmp, ec);
+      throw;
     }
-    for (const auto &s : r.fitted[k].samples)
-      f << abscissa(s, kind) << ' ' << deviator(s.stress) * 1e-6 << ' ' << 100 * volumetric_strain(s.strain) << '\n';
-    write_text(tmp / "data" / ("target" + std::to_string(k) + ".dat"), t.str());
-    write_text(tmp / "data" / ("fit" + std::to_string(k) + ".dat"), f.str());
-    const std::string x = kind == compare::CurveKind::AxialLateral ? "-{/Symbol e}_{zz} [%]" : "{/Symbol g}_{max} [%]";
-    gp << "set output 'fit" << k << ".png'\nset title 'target " << k + 1 << " (" << fs::path(targets[k].name).filename().string()
-       << ") and the calibrated material point'\nset xlabel '" << x << "'\nset ylabel 'q [MPa]'\n"
-       << "set y2label '{/Symbol e}_v [%] (dilation +)'\nset y2tics\n"
-       << "plot 'data/target" << k << ".dat' u 1:2 w p pt 7 ps 0.5 lc rgb '#2ca02c' t 'target q', "
-       << "'data/fit" << k << ".dat' u 1:2 w l lw 2 lc rgb '#d62728' t 'fit q', "
-       << "'data/target" << k << ".dat' u 1:3 axes x1y2 w p pt 6 ps 0.5 lc rgb '#1f77b4' t 'target {/Symbol e}_v', "
-       << "'data/fit" << k << ".dat' u 1:3 axes x1y2 w l lw 1 dt 2 lc rgb '#1f77b4' t 'fit {/Symbol e}_v'\n"
-       << "unset y2tics\nunset y2label\n";
-  }
-  write_text(tmp / "fit.gp", gp.str());
-  const std::string cmd = "cd '" + tmp.string() + "' && gnuplot fit.gp > gnuplot.log 2>&1";
-  const bool plots = std::system(cmd.c_str()) == 0;
-
-  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Calibration: " << case_file
-       << "</title><style>body{font-family:sans-serif;max-width:1100px;margin:2em auto}table{border-collapse:collapse}"
-          "td,th{border:1px solid #bbb;padding:3px 8px}td{text-align:right;font-family:monospace}img{max-width:49%}"
-          "</style></head><body>\n<h1>Calibration of the continuum parameters</h1>\n<p>Case <code>"
-       << case_file << "</code>; " << targets.size() << " target curves, " << r.residuals << " residuals, "
-       << r.iterations << " Levenberg-Marquardt iterations, " << num(r.seconds, 3) << " s. Cost "
-       << num(r.initial_cost, 6) << " &rarr; " << num(r.final_cost, 6) << ". Units: Pa and degrees. "
-       << "Standard errors from the Jacobian covariance scaled by the residual variance.</p>\n"
-       << "<table><tr><th>parameter</th><th>start</th><th>calibrated</th><th>standard error</th><th>bounds</th></tr>\n";
-  for (std::size_t i = 0; i < n; ++i)
-    html << "<tr><th>" << r.parameters[i].name << "</th><td>" << num(r.start[i], 6) << "</td><td>"
-         << num(r.value[i], 6) << "</td><td>" << num(r.standard_error[i], 3) << "</td><td>["
-         << num(r.parameters[i].lower, 3) << ", " << num(r.parameters[i].upper, 3) << "]</td></tr>\n";
-  html << "</table>\n<h2>Correlations</h2>\n<table><tr><th></th>";
-  for (std::size_t j = 0; j < n; ++j)
-    html << "<th>" << r.parameters[j].name << "</th>";
-  html << "</tr>\n";
-  for (std::size_t i = 0; i < n; ++i) {
-    html << "<tr><th>" << r.parameters[i].name << "</th>";
-    for (std::size_t j = 0; j < n; ++j)
-      html << "<td>" << num(r.correlation(i, j), 3) << "</td>";
-    html << "</tr>\n";
-  }
-  html << "</table>\n<h2>Curves</h2>\n<table><tr><th>target</th><th>weight</th><th>rms of q residual / max q</th></tr>\n";
-  for (std::size_t k = 0; k < targets.size(); ++k)
-    html << "<tr><th>" << targets[k].name << "</th><td>" << num(targets[k].weight, 4) << "</td><td>"
-         << num(r.rms_deviator[k], 4) << "</td></tr>\n";
-  html << "</table>\n";
-  if (plots)
-    for (std::size_t k = 0; k < targets.size(); ++k)
-      html << "<img src=\"fit" << k << ".png\" alt=\"fit " << k << "\">\n";
-  else
-    html << "<p>(no plots: gnuplot failed, see gnuplot.log)</p>\n";
-  for (const auto &note : r.notes)
-    html << "<p>" << note << "</p>\n";
-  html << "<p>Calibrated section: <code>" << fragment_name << "</code> (use it with <code>include</code>).</p>\n</body></html>\n";
-  write_text(tmp / "index.html", html.str());
-
-  fs::remove_all(dir);
-  fs::rename(tmp, dir);
+  });
 }
 
 std::vector<std::pair<std::string, std::string>> read_parameter_table(const fs::path &dir)

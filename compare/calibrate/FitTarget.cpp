@@ -76,9 +76,53 @@ Response simulate(const FitTarget &target, const continuum::MaterialParameters &
   return ProgramRunner(target.program, engine).run();
 }
 
-std::size_t residual_count(const FitTarget &target) { return 2 * target.samples.size(); }
+std::vector<ResidualQuantity> fitted_quantities(const CalibrationParameters &c)
+{
+  std::vector<ResidualQuantity> out;
+  for (const FittedQuantity &f : c.quantities) {
+    ResidualQuantity q;
+    q.name = f.name;
+    q.weight = f.weight;
+    if (f.name == "q")
+      q.kind = ResidualQuantity::Kind::Deviator;
+    else if (f.name == "p")
+      q.kind = ResidualQuantity::Kind::MeanStress;
+    else if (f.name == "eps_v")
+      q.kind = ResidualQuantity::Kind::Volumetric;
+    else
+      throw CalibrationError("calibration/quantities", "'" + f.name + "' is not a fitted quantity (q, p, eps_v)");
+    out.push_back(q);
+  }
+  if (out.empty())
+    throw CalibrationError("calibration/quantities", "no quantity to fit (q, p, eps_v)");
+  return out;
+}
 
-void residuals(const FitTarget &target, const Response &model, double volumetric_weight, double *out)
+std::vector<ResidualQuantity> all_quantities()
+{
+  return {{ResidualQuantity::Kind::Deviator, 1.0, "q"}, {ResidualQuantity::Kind::MeanStress, 1.0, "p"},
+          {ResidualQuantity::Kind::Volumetric, 1.0, "eps_v"}};
+}
+
+std::size_t residual_count(const FitTarget &target, std::size_t quantities)
+{
+  return quantities * target.samples.size();
+}
+
+namespace {
+double value_of(ResidualQuantity::Kind kind, const ResponseSample &s)
+{
+  switch (kind) {
+  case ResidualQuantity::Kind::Deviator: return deviator(s.stress);
+  case ResidualQuantity::Kind::MeanStress: return mean_stress(s.stress);
+  case ResidualQuantity::Kind::Volumetric: return volumetric_strain(s.strain);
+  }
+  return 0.0;
+}
+} // namespace
+
+void residuals(const FitTarget &target, const Response &model, const std::vector<ResidualQuantity> &quantities,
+               double *out)
 {
   const auto &m = model.samples;
   std::size_t j = 0;
@@ -86,14 +130,15 @@ void residuals(const FitTarget &target, const Response &model, double volumetric
     const ResponseSample &s = target.response.samples[k];
     while (j + 1 < m.size() && m[j + 1].time < s.time)
       ++j;
-    double q = deviator(m.back().stress), v = volumetric_strain(m.back().strain);
-    if (j + 1 < m.size() && m[j].time <= s.time) {
-      const double a = (s.time - m[j].time) / (m[j + 1].time - m[j].time);
-      q = (1 - a) * deviator(m[j].stress) + a * deviator(m[j + 1].stress);
-      v = (1 - a) * volumetric_strain(m[j].strain) + a * volumetric_strain(m[j + 1].strain);
+    // Linear in time between the model's samples j and j + 1; held at its last sample.
+    const bool inside = j + 1 < m.size() && m[j].time <= s.time;
+    const double a = inside ? (s.time - m[j].time) / (m[j + 1].time - m[j].time) : 0.0;
+    for (const ResidualQuantity &q : quantities) {
+      const double model_value =
+        inside ? (1 - a) * value_of(q.kind, m[j]) + a * value_of(q.kind, m[j + 1]) : value_of(q.kind, m.back());
+      const double scale = q.kind == ResidualQuantity::Kind::Volumetric ? target.volume_scale : target.q_scale;
+      *out++ = target.weight * q.weight * (model_value - value_of(q.kind, s)) / scale;
     }
-    *out++ = target.weight * (q - deviator(s.stress)) / target.q_scale;
-    *out++ = target.weight * volumetric_weight * (v - volumetric_strain(s.strain)) / target.volume_scale;
   }
 }
 

@@ -4,15 +4,20 @@
 // case it was run from, so the same loading program and initial stress are replayed on
 // the material point with trial continuum parameters (unloading branches left out: the
 // fit uses the main path). The residuals compare, at the target's main-path sample
-// times, the deviator q = sqrt(3 J2) (scaled by the target's largest q) and the
-// volumetric strain (scaled by its range, at least 1e-3, times the volumetric weight):
-//   r_q,k = w (q_model(t_k) - q_target(t_k)) / max|q_target|
+// times t_k, the quantities the case file names (calibration/quantities), each with its
+// weight w_j, the target's weight w and a scale that makes them dimensionless:
+//   r_q,k = w w_q (q_model(t_k) - q_target(t_k)) / max q_target     q = sqrt(3 J2)
+//   r_p,k = w w_p (p_model(t_k) - p_target(t_k)) / max q_target     p = tr(sigma)/3
 //   r_v,k = w w_v (eps_v,model(t_k) - eps_v,target(t_k)) / max(range eps_v,target, 1e-3)
+// q carries E (initial slope), c and phi (peak) and the softening; eps_v carries nu and
+// psi at constant lateral stress; p carries psi in isochoric shear, where eps_v = 0 and
+// dilatancy shows as the rise of the mean stress instead (S0 program 1, eq. (3)).
 // Model values between its samples are interpolated linearly in time; a model run that
 // ends early (a stop condition met sooner) is held at its last sample.
 #pragma once
 
 #include "common/LoadingProgram.h"
+#include "common/case/CaseParameters.h"
 #include "common/Response.h"
 #include "continuum/driver/Materials.h"
 
@@ -42,10 +47,24 @@ FitTarget make_target(std::string name, Response response, LoadingProgram progra
 /// The target's program on the material point with `material` (main path only).
 Response simulate(const FitTarget &target, const continuum::MaterialParameters &material);
 
-/// Number of residuals of a target (2 per fitted sample).
-std::size_t residual_count(const FitTarget &target);
-/// Writes residual_count(target) residuals of `model` against the target.
-void residuals(const FitTarget &target, const Response &model, double volumetric_weight, double *out);
+/// A response quantity compared at the samples, with its weight.
+struct ResidualQuantity {
+  enum class Kind { Deviator, MeanStress, Volumetric };
+  Kind kind = Kind::Deviator;
+  double weight = 1.0;
+  std::string name; ///< "q", "p", "eps_v"
+};
+/// The quantities of a calibration section (throws CalibrationError for an unknown name).
+std::vector<ResidualQuantity> fitted_quantities(const CalibrationParameters &c);
+/// q, p and eps_v with weight 1: what the report shows, fitted or not.
+std::vector<ResidualQuantity> all_quantities();
+
+/// Number of residuals of a target: one per fitted sample and quantity.
+std::size_t residual_count(const FitTarget &target, std::size_t quantities);
+/// Writes residual_count() residuals of `model` against the target, sample by sample,
+/// quantity by quantity within a sample: out[k * quantities.size() + j].
+void residuals(const FitTarget &target, const Response &model, const std::vector<ResidualQuantity> &quantities,
+               double *out);
 
 /// Deviator q = sqrt(3 J2) of a stress.
 double deviator(const Tensor3 &stress);

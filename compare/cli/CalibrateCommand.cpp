@@ -11,10 +11,10 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace geocomp::cli {
 
@@ -22,37 +22,40 @@ namespace fs = std::filesystem;
 using namespace geocomp::calibration;
 
 namespace {
-/// The FE cube with the calibrated section on each target's program: the largest
-/// difference of q from the material-point fit, relative to the target's largest q.
-std::string verify_on_cube(const CaseDescription &c, const CalibrationResult &r, const std::vector<FitTarget> &targets,
-                           const fs::path &dir)
+/// The FE cube with the calibrated section on each target's program, against the
+/// material-point fit and the target: largest differences of q at the target's samples,
+/// relative to the target's largest q (FitReport.h).
+std::vector<Verification> verify_on_cube(const CaseDescription &c, const CalibrationResult &r,
+                                         const std::vector<FitTarget> &targets, const fs::path &dir)
 {
-  std::ostringstream o;
-  o << "# FE cube (" << c.continuum.cells_per_edge << "^3 cells, Q" << c.continuum.degree
-    << ") against the calibrated material point and the target, per target\n"
-    << "# file\tmax|q_cube - q_point|/max q\tmax|q_cube - q_target|/max q\n";
+  const std::vector<ResidualQuantity> q_only = {{ResidualQuantity::Kind::Deviator, 1.0, "q"}};
+  std::vector<Verification> out;
   for (std::size_t k = 0; k < targets.size(); ++k) {
     CaseDescription cube_case = c;
     cube_case.continuum = r.calibrated;
     cube_case.program = targets[k].program;
     cube_case.specimen.isotropic_pressure = -targets[k].initial_stress;
     cube_case.output.fields = false;
+    const auto t0 = std::chrono::steady_clock::now();
     auto engine = make_engine("continuum", cube_case, dir.string(), MPI_COMM_SELF);
     const Response cube = ProgramRunner(cube_case.program, *engine).run();
-    std::vector<double> to_target(residual_count(targets[k]));
-    const FitTarget point =
-      make_target("point", r.fitted[k], targets[k].program, targets[k].initial_stress, targets[k].substeps, 1.0);
-    std::vector<double> rp(residual_count(point));
-    residuals(point, cube, 0.0, rp.data());
-    residuals(targets[k], cube, 0.0, to_target.data());
-    double dp = 0.0, dt = 0.0;
-    for (std::size_t i = 0; i < rp.size(); i += 2)
-      dp = std::max(dp, std::abs(rp[i]));
-    for (std::size_t i = 0; i < to_target.size(); i += 2)
-      dt = std::max(dt, std::abs(to_target[i]) / targets[k].weight);
-    o << targets[k].name << '\t' << dp << '\t' << dt << '\n';
+    Verification v;
+    v.target = targets[k].name;
+    v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    FitTarget target = targets[k];
+    target.weight = 1.0;
+    const std::size_t m = residual_count(target, 1);
+    std::vector<double> to_cube(m), to_point(m);
+    residuals(target, cube, q_only, to_cube.data());
+    residuals(target, r.fitted[k], q_only, to_point.data());
+    for (std::size_t i = 0; i < m; ++i) {
+      v.cube_vs_point = std::max(v.cube_vs_point, std::abs(to_cube[i] - to_point[i]));
+      v.cube_vs_target = std::max(v.cube_vs_target, std::abs(to_cube[i]));
+      v.point_vs_target = std::max(v.point_vs_target, std::abs(to_point[i]));
+    }
+    out.push_back(v);
   }
-  return o.str();
+  return out;
 }
 } // namespace
 
@@ -67,8 +70,9 @@ Command calibrate_command()
               "files by least squares over the material point (Ceres, Levenberg-Marquardt), starting\n"
               "from closed-form estimates. Writes <output>/calibration/: the calibrated section\n"
               "(include it in case files), parameters.tsv, fit.json, index.html with the curves,\n"
-              "standard errors and correlations. --verify reruns the calibrated model on the FE cube\n"
-              "for each target's program and reports the differences (verification.tsv).\n"
+              "standard errors, correlations and residuals. --verify reruns the calibrated model on\n"
+              "the FE cube for each target's program and adds the differences from the material-point\n"
+              "fit and from the target to the report.\n"
               "A parameter the targets cannot identify is named and the command exits with 2.\n";
   cmd.run = [](const std::vector<std::string> &args) {
     const Arguments a = Arguments::parse(args, {"output"}, {"verify"});
@@ -106,20 +110,23 @@ Command calibrate_command()
       }
       CalibrationResult r = calibrate(start, targets, c.calibration);
       r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
-      write_fit_report(dir, c.calibration.output_file, r, targets, c.file);
       std::cout << "calibrate: " << r.iterations << " iterations, " << r.seconds << " s, cost " << r.initial_cost
                 << " -> " << r.final_cost << "\n";
       for (std::size_t i = 0; i < r.parameters.size(); ++i)
         std::cout << "  " << r.parameters[i].name << " = " << r.value[i] << " +- " << r.standard_error[i]
                   << "  (start " << r.start[i] << ")\n";
-      std::cout << "calibrated section: " << (dir / c.calibration.output_file).string() << "\nreport: "
-                << (dir / "index.html").string() << "\n";
+      std::vector<Verification> verification;
       if (a.has("verify")) {
         ensure_mpi();
-        const std::string v = verify_on_cube(c, r, targets, dir);
-        std::ofstream(dir / "verification.tsv") << v;
-        std::cout << v;
+        verification = verify_on_cube(c, r, targets, dir);
+        std::cout << "verification on the FE cube (max |q difference| / max q_target):\n";
+        for (const auto &v : verification)
+          std::cout << "  " << v.target << ": cube vs material point " << v.cube_vs_point << ", cube vs target "
+                    << v.cube_vs_target << ", material point vs target " << v.point_vs_target << "\n";
       }
+      write_fit_report(dir, c.calibration.output_file, r, targets, c.file, verification);
+      std::cout << "calibrated section: " << (dir / c.calibration.output_file).string() << "\nreport: "
+                << (dir / "index.html").string() << "\n";
       return static_cast<int>(ok);
     } catch (const CalibrationError &e) {
       std::cerr << "error: " << c.file << ": parameter '" << e.parameter << "': " << e.what() << "\n";

@@ -48,6 +48,7 @@ Command report_command();
 Command compare_command();
 Command calibrate_command();
 Command sweep_command();
+Command pack_command();
 /// Starts MPI (and PETSc) once, for the commands that run engines (deal.II's MPI_InitFinalize:
 /// one thread per rank for deal.II's task parallelism; the DEM uses OpenMP).
 void ensure_mpi();

@@ -1,10 +1,12 @@
 #include "dem/program/SpecimenPreparation.h"
 
-#include "dem/program/LatticePacking.h"
+#include "dem/program/SpecimenStore.h"
 #include "dem/specimen/Packing.h"
+#include "dem/specimen/SizeDistribution.h"
 
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -12,118 +14,301 @@ namespace geocomp::dem {
 
 namespace {
 
-/// The loose start: the case's text file, or a jittered lattice with at least N sites
-/// (the first N kept), radius R and the uniform spread when the distribution is uniform.
-Packing loose_packing(const CaseDescription &c, std::string &method)
+double sphere_volume(double r) { return 4.0 / 3.0 * M_PI * r * r * r; }
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
 {
-  const SpecimenParameters &s = c.specimen;
-  if (s.source == "text") {
-    try {
-      Packing p = read_xyzr(s.text_file);
-      p.density = s.density;
-      if (p.size() == 0)
-        throw CaseError(c.file, "specimen/text file", "'" + s.text_file + "' holds no spheres");
-      method = "text file " + s.text_file;
-      return p;
-    } catch (const PackingFileError &e) {
-      throw CaseError(c.file, "specimen/text file", e.what());
-    }
-  }
-  if (s.source != "generate")
-    throw CaseError(c.file, "specimen/source", "'" + s.source + "' is not available in this build (expected generate or text)");
-  const int n = int(std::ceil(std::cbrt(double(s.particles)) - 1e-9));
-  const double spread = s.size_distribution == "uniform" ? s.radius_spread : 0.0;
-  Packing p = jittered_lattice(n, s.radius, spread, 0.1, s.density, c.seed);
-  p.position.resize(s.particles);
-  p.radius.resize(s.particles);
-  method = "jittered lattice";
-  return p;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// Holds sigma_0 on all axes, in chunks so that progress can be reported.
-HoldResult hold(DemEngine &engine, double pressure, double unbalanced, const PreparationCriteria &k,
-                const std::string &phase, const PreparationProgress &progress)
+Vec3 box_lengths(const DemSystem &s)
 {
-  const double interval = k.check_interval_steps * engine.system().time_step();
-  const double chunk = 50.0 * interval;
-  HoldResult total;
-  while (true) {
-    const HoldResult r = hold_isotropic(engine, pressure, k.stress_tolerance, unbalanced, chunk, interval);
-    total.converged = r.converged;
-    total.stress_error = r.stress_error;
-    total.unbalanced = r.unbalanced;
-    total.time += r.time;
-    if (progress)
-      progress(phase, total.time);
-    if (r.converged || total.time >= k.max_time)
-      return total;
+  Vec3 L;
+  for (int a = 0; a < 3; ++a)
+    L[a] = s.wall(2 * a + 1).point[a] - s.wall(2 * a).point[a];
+  return L;
+}
+
+/// Mean wall stress, compression positive: sum over the six walls of |F . n| / area, / 6.
+double mean_wall_pressure(const DemSystem &s)
+{
+  const Vec3 L = box_lengths(s);
+  double p = 0.0;
+  for (int w = 0; w < 6; ++w) {
+    const int a = w / 2;
+    p += -s.wall(w).force.dot(s.wall(w).normal) / (L[(a + 1) % 3] * L[(a + 2) % 3]);
   }
+  return p / 6.0;
+}
+
+/// The case's contact law with mu_s = mu_p = 0 (S0: frictionless while the packing forms).
+ContactParameters frictionless(const ContactParameters &c)
+{
+  ContactParameters f = c;
+  f.particle_friction = 0.0;
+  f.wall_friction = 0.0;
+  return f;
+}
+
+/// Sets the packing dynamics: first-order (Aristotelian) or Newtonian with damping.
+void set_packing_dynamics(DemSystem &s, bool aristotelian, const PreparationCriteria &k)
+{
+  if (aristotelian) {
+    s.set_overdamped(k.aristotelian_beta);
+    s.set_local_damping(0.0);
+  } else {
+    s.set_overdamped(0.0);
+    s.set_local_damping(k.preparation_damping);
+  }
+}
+
+PreparedSpecimen from_store(const CaseDescription &c)
+{
+  const SpecimenParameters &s = c.specimen;
+  StoredSpecimen stored;
+  try {
+    stored = read_stored_specimen(s.store_file, s.store_name);
+  } catch (const StoreError &e) {
+    throw CaseError(c.file, e.missing_name ? "specimen/store name" : "specimen/store file", e.what());
+  }
+  // The stored state carries its contact law; a case that asks for another friction or
+  // restitution would start out of equilibrium, so it is refused.
+  auto same = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b)); };
+  const auto mismatch = [&](const std::string &parameter, double stored_value, double case_value) {
+    throw CaseError(c.file, parameter,
+                    "the stored specimen '" + s.store_name + "' was prepared with " + std::to_string(stored_value) +
+                      ", the case asks for " + std::to_string(case_value) +
+                      "; set the case to the stored value or pack a new specimen");
+  };
+  if (!same(stored.metadata.contact.particle_friction, c.contact.particle_friction))
+    mismatch("contact/particle friction", stored.metadata.contact.particle_friction, c.contact.particle_friction);
+  if (!same(stored.metadata.contact.wall_friction, c.contact.wall_friction))
+    mismatch("contact/wall friction", stored.metadata.contact.wall_friction, c.contact.wall_friction);
+  if (!same(stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure))
+    mismatch("specimen/isotropic pressure", stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure);
+  PreparedSpecimen out{std::move(stored.system), stored.record};
+  if (c.dem.threads > 0)
+    out.system.set_num_threads(int(c.dem.threads)); // results do not depend on the thread count
+  out.system.set_local_damping(c.dem.local_damping);
+  return out;
 }
 
 } // namespace
 
+double packing_fraction(const DemSystem &system)
+{
+  double solid = 0.0;
+  for (double r : system.particles().radius)
+    solid += sphere_volume(r);
+  return solid / box_lengths(system).prod();
+}
+
 std::string PreparationRecord::describe() const
 {
   std::ostringstream o;
-  o << particles << " spheres, " << method << " (seed " << seed << "), packing fraction "
-    << initial_packing_fraction << " -> " << final_packing_fraction << "; frictionless servo compaction to "
-    << pressure << " Pa in " << frictionless.time << " s of DEM time (stress error " << frictionless.stress_error
-    << ", unbalanced-force ratio " << frictionless.unbalanced << "), then with friction at rest after "
-    << frictional.time << " s (stress error " << frictional.stress_error << ", unbalanced-force ratio "
-    << frictional.unbalanced << "); " << steps << " steps, " << wall_seconds << " s wall";
+  o << particles << " spheres (" << size_distribution << ", mean R " << mean_radius << " m), " << method
+    << " (seed " << seed << "): box " << box_size << " m, packing fraction " << initial_packing_fraction
+    << " placed -> " << grown_packing_fraction << " grown (" << growth.steps << " steps, " << growth.wall_seconds
+    << " s wall) -> at rest frictionless after " << frictionless.steps << " steps (unbalanced "
+    << frictionless_rest.unbalanced << ", mean wall stress " << grown_pressure << " Pa) -> with friction after "
+    << frictional.steps << " steps -> consolidated to " << pressure << " Pa after " << consolidation.steps
+    << " steps (stress error " << consolidated.stress_error << ", unbalanced " << consolidated_rest.unbalanced
+    << ", kinetic/elastic " << consolidated_rest.kinetic_ratio() << "): packing fraction "
+    << final_packing_fraction << ", Z " << coordination << ", mean overlap " << mean_overlap << " d; " << steps
+    << " steps, " << wall_seconds << " s wall";
   return o.str();
 }
 
-PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCriteria &criteria,
+GrowthTarget growth_target(const CaseDescription &c)
+{
+  const SpecimenParameters &s = c.specimen;
+  SizeDistribution dist;
+  try {
+    dist.kind = SizeDistribution::parse(s.size_distribution);
+  } catch (const std::invalid_argument &e) {
+    throw CaseError(c.file, "specimen/size distribution", e.what());
+  }
+  dist.mean_radius = s.radius;
+  dist.spread = s.radius_spread;
+  dist.sigma = s.lognormal_sigma;
+  GrowthTarget t;
+  t.radii = dist.sample(s.particles, c.seed);
+  double solid = 0.0;
+  for (double r : t.radii)
+    solid += sphere_volume(r);
+  if (s.box_size > 0.0) {
+    // S0 gives N, eta, R and L0 together: L0 and eta win, the radii follow.
+    const double scale = std::cbrt(s.packing_fraction * s.box_size * s.box_size * s.box_size / solid);
+    if (std::abs(scale - 1.0) > 0.1)
+      throw CaseError(c.file, "specimen/box size",
+                      "L0 = " + std::to_string(s.box_size) + " m with N = " + std::to_string(s.particles) +
+                        " and eta = " + std::to_string(s.packing_fraction) + " needs radii " +
+                        std::to_string(scale) + " times the given ones (more than 10 % off); set box size = 0 "
+                        "to derive L0 from N, eta and R");
+    for (double &r : t.radii)
+      r *= scale;
+    t.box_size = s.box_size;
+  } else {
+    t.box_size = std::cbrt(solid / s.packing_fraction);
+  }
+  const double r_max = *std::max_element(t.radii.begin(), t.radii.end());
+  if (t.box_size < 4.0 * r_max)
+    throw CaseError(c.file, "specimen/particles", "the box (" + std::to_string(t.box_size) +
+                                                    " m) is smaller than two of the largest spheres");
+  return t;
+}
+
+GrownPacking grow_packing(const CaseDescription &c, const PreparationCriteria &k, const PreparationProgress &progress)
+{
+  const SpecimenParameters &s = c.specimen;
+  if (!(k.initial_packing_fraction > 0.0 && k.initial_packing_fraction < s.packing_fraction))
+    throw std::invalid_argument("grow_packing: the initial packing fraction must lie in (0, eta)");
+  const GrowthTarget target = growth_target(c);
+  // S0: small spheres at random, no overlap; f0 = (eta_0 / eta)^(1/3).
+  const double f0 = std::cbrt(k.initial_packing_fraction / s.packing_fraction);
+  Packing start;
+  start.density = s.density;
+  start.box_min = Vec3::Zero();
+  start.box_max = Vec3::Constant(target.box_size);
+  start.radius.resize(target.radii.size());
+  for (std::size_t i = 0; i < target.radii.size(); ++i)
+    start.radius[i] = f0 * target.radii[i];
+  start.position = place_at_random(start.radius, start.box_min, start.box_max, c.seed);
+
+  GrownPacking g{make_system(start, frictionless(c.contact), c.dem), {}, {}, start.packing_fraction()};
+  double d_mean = 0.0;
+  for (double r : target.radii)
+    d_mean += 2.0 * r;
+  d_mean /= double(target.radii.size());
+  g.system.set_skin(c.dem.skin * d_mean); // the skin of the final radii
+  set_packing_dynamics(g.system, s.aristotelian, k);
+
+  // Growth rate from the inertial number at sigma_0 (DEM-NOTES section 8).
+  GrowthSettings gs;
+  gs.rate = k.growth_inertial_number / (d_mean * std::sqrt(s.density / s.isotropic_pressure));
+  gs.interval = k.growth_interval;
+  gs.time_step_safety = c.dem.time_step_safety;
+  g.growth = grow_radii(g.system, target.radii, gs, progress);
+  g.rest = relax(g.system, k.packing, "rest (frictionless)", progress);
+  return g;
+}
+
+PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCriteria &k,
                                   const PreparationProgress &progress)
 {
-  const auto start = std::chrono::steady_clock::now();
-  PreparationRecord rec;
-  Packing loose = loose_packing(c, rec.method);
-  rec.method += " + servo compaction";
-  rec.seed = c.seed;
-  rec.particles = loose.size();
-  rec.initial_packing_fraction = loose.packing_fraction();
-  rec.pressure = c.specimen.isotropic_pressure;
-  if (!(rec.pressure > 0.0))
+  const SpecimenParameters &s = c.specimen;
+  if (s.source == "store")
+    return from_store(c);
+  if (s.source != "generate" && s.source != "text")
+    throw CaseError(c.file, "specimen/source", "'" + s.source + "' is not one of generate, text, store");
+  if (!(s.isotropic_pressure > 0.0))
     throw CaseError(c.file, "specimen/isotropic pressure", "must be > 0 to consolidate a specimen");
 
-  // S0: frictionless particles and walls while the packing forms; preparation damping.
-  ContactParameters frictionless = c.contact;
-  frictionless.particle_friction = 0.0;
-  frictionless.wall_friction = 0.0;
-  DemParameters d = c.dem;
-  DemSystem loose_system = make_system(loose, frictionless, d);
-  loose_system.set_local_damping(std::max(0.5, c.dem.local_damping));
-  const DemEngineParameters servo = DemEngineParameters::from_case(c.dem);
-  DemEngine compact(std::move(loose_system), servo);
-  rec.frictionless = hold(compact, rec.pressure, criteria.preparation_unbalanced, criteria, "compaction", progress);
-  if (!rec.frictionless.converged)
-    throw std::runtime_error("specimen preparation: the frictionless compaction to " + std::to_string(rec.pressure) +
-                             " Pa did not converge in " + std::to_string(criteria.max_time) + " s of DEM time");
+  const auto start = std::chrono::steady_clock::now();
+  PreparationRecord rec;
+  rec.seed = c.seed;
+  rec.pressure = s.isotropic_pressure;
+  rec.aristotelian = s.aristotelian;
+  const std::string dynamics = s.aristotelian ? "Aristotelian" : "Newtonian";
 
-  // Friction on, damping as the case says, held until at rest.
-  DemSystem dense = compact.system();
-  dense.set_friction(c.contact.particle_friction);
-  for (std::size_t w = 0; w < dense.n_walls(); ++w)
-    dense.set_wall_friction(w, c.contact.wall_friction);
-  dense.set_local_damping(c.dem.local_damping);
-  DemEngine rest(std::move(dense), servo);
-  rec.frictional = hold(rest, rec.pressure, criteria.unbalanced_force_ratio, criteria, "equilibrium", progress);
-  if (!rec.frictional.converged)
-    throw std::runtime_error("specimen preparation: the specimen did not come to rest at " +
-                             std::to_string(rec.pressure) + " Pa in " + std::to_string(criteria.max_time) +
-                             " s of DEM time");
-  PreparedSpecimen out{rest.system(), {}};
+  DemSystem system;
+  if (s.source == "generate") {
+    GrownPacking g = grow_packing(c, k, progress);
+    system = std::move(g.system);
+    rec.method = "radius growth (" + dynamics + ") + servo consolidation";
+    rec.size_distribution = s.size_distribution;
+    rec.initial_packing_fraction = g.initial_packing_fraction;
+    rec.growth = g.growth.cost;
+    rec.frictionless = g.rest.cost;
+    rec.frictionless_rest = g.rest.rest;
+    rec.frictionless_converged = g.rest.converged;
+  } else {
+    Packing p;
+    try {
+      p = read_xyzr(s.text_file);
+    } catch (const PackingFileError &e) {
+      throw CaseError(c.file, "specimen/text file", e.what());
+    }
+    if (p.size() == 0)
+      throw CaseError(c.file, "specimen/text file", "'" + s.text_file + "' holds no spheres");
+    p.density = s.density;
+    rec.method = "text file " + s.text_file + " (" + dynamics + " rest) + servo consolidation";
+    rec.size_distribution = "from file";
+    rec.initial_packing_fraction = p.packing_fraction();
+    system = make_system(p, frictionless(c.contact), c.dem);
+    set_packing_dynamics(system, s.aristotelian, k);
+    const RelaxResult r = relax(system, k.packing, "rest (frictionless)", progress);
+    rec.frictionless = r.cost;
+    rec.frictionless_rest = r.rest;
+    rec.frictionless_converged = r.converged;
+  }
+  rec.particles = system.n_particles();
+  rec.box_size = box_lengths(system).x();
+  rec.grown_packing_fraction = packing_fraction(system);
+  rec.grown_pressure = mean_wall_pressure(system);
+  double r_sum = 0.0;
+  for (double r : system.particles().radius)
+    r_sum += r;
+  rec.mean_radius = r_sum / double(system.n_particles());
+
+  // S0: friction on, Newtonian motion from rest, relaxed at fixed walls.
+  system.set_overdamped(0.0);
+  system.set_local_damping(k.preparation_damping);
+  for (ParticleId id = 0; id < system.n_particles(); ++id) {
+    system.set_velocity(id, Vec3::Zero());
+    system.set_angular_velocity(id, Vec3::Zero());
+  }
+  system.set_friction(c.contact.particle_friction);
+  for (std::size_t w = 0; w < system.n_walls(); ++w)
+    system.set_wall_friction(w, c.contact.wall_friction);
+  const RelaxResult fr = relax(system, k.packing, "rest (friction on)", progress);
+  rec.frictional = fr.cost;
+  rec.frictional_rest = fr.rest;
+  rec.frictional_converged = fr.converged;
+
+  // Isotropic consolidation with the servo (DemEngine, Yade-like gain from the wall
+  // stiffness, velocity cap) until sigma_0 on all three axes and at rest.
+  const auto t_consolidation = std::chrono::steady_clock::now();
+  const std::uint64_t steps0 = system.n_steps();
+  const double time0 = system.time();
+  DemEngine engine(std::move(system), DemEngineParameters::from_case(c.dem));
+  const double interval = k.check_interval_steps * engine.system().time_step();
+  while (true) {
+    const HoldResult h = hold_isotropic(engine, s.isotropic_pressure, k.stress_tolerance, k.unbalanced_force_ratio,
+                                        50.0 * interval, interval);
+    rec.consolidated = h;
+    rec.consolidated_rest = rest_state(engine.system());
+    const double spent = engine.system().time() - time0;
+    if (progress)
+      progress("consolidation", spent);
+    if (h.converged && rec.consolidated_rest.kinetic_ratio() <= k.kinetic_ratio)
+      break;
+    if (spent >= k.max_time)
+      throw std::runtime_error("specimen preparation: the consolidation to " + std::to_string(s.isotropic_pressure) +
+                               " Pa did not converge in " + std::to_string(k.max_time) +
+                               " s of DEM time (stress error " + std::to_string(h.stress_error) +
+                               ", unbalanced-force ratio " + std::to_string(h.unbalanced) + ")");
+  }
+  rec.consolidation.steps = engine.system().n_steps() - steps0;
+  rec.consolidation.time = engine.system().time() - time0;
+  rec.consolidation.wall_seconds = seconds_since(t_consolidation);
+
+  PreparedSpecimen out{engine.system(), {}};
   for (std::size_t w = 0; w < out.system.n_walls(); ++w)
     out.system.set_wall_velocity(w, Vec3::Zero());
-  const Vector3 L = rest.box_lengths();
-  double solid = 0.0;
-  for (double r : out.system.particles().radius)
-    solid += 4.0 / 3.0 * M_PI * r * r * r;
-  rec.final_packing_fraction = solid / L.prod();
+  out.system.set_local_damping(c.dem.local_damping);
+  rec.final_packing_fraction = packing_fraction(out.system);
+  std::size_t pairs = 0;
+  double overlap = 0.0;
+  for (const ContactRecord &cr : out.system.contacts())
+    if (!cr.wall) {
+      ++pairs;
+      overlap += cr.overlap;
+    }
+  rec.coordination = 2.0 * double(pairs) / double(out.system.n_particles());
+  rec.mean_overlap = pairs > 0 ? overlap / double(pairs) / (2.0 * rec.mean_radius) : 0.0;
   rec.steps = out.system.n_steps();
-  rec.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  rec.wall_seconds = seconds_since(start);
   out.record = rec;
   return out;
 }

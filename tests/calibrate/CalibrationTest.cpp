@@ -1,6 +1,7 @@
 // Calibration over the material point: curves made by the driver with known parameters
-// are recovered (exactly without noise, to 1 % with noise), the closed-form starting values
-// land near the truth, and a target that cannot identify a parameter names it.
+// are recovered (exactly without noise, to 1 % with noise; psi from the mean stress of
+// isochoric shear), the closed-form starting values land near the truth (E and nu exactly
+// from an unloading branch), and a target that cannot identify a parameter names it.
 #include "compare/calibrate/Calibration.h"
 #include "compare/calibrate/FitReport.h"
 #include "compare/calibrate/StartingValues.h"
@@ -37,7 +38,7 @@ LoadingProgram axial(double p)
   program.sample_interval = 0.0015;
   Stage s;
   s.name = "axial";
-  s.axes = {AxisDrive::stress(-p), AxisDrive::stress(-p), AxisDrive::rate(-1.0)};
+  s.axes = {{AxisDrive::stress(-p), AxisDrive::stress(-p), AxisDrive::rate(-1.0)}};
   s.stop_any = {parse_condition("eps_zz <= -0.06", "test")};
   s.max_duration = 1.0;
   program.stages = {s};
@@ -57,6 +58,15 @@ LoadingProgram isochoric()
   s.stop_any = {parse_condition("gamma_max >= 0.002", "test")};
   s.max_duration = 1.0;
   program.stages = {s};
+  return program;
+}
+
+/// Isochoric shear (S0 eq. (3), lambda = 0) past yield, to gamma_max = 3 %.
+LoadingProgram isochoric_past_yield()
+{
+  LoadingProgram program = isochoric();
+  program.sample_interval = 0.0005;
+  program.stages[0].stop_any = {parse_condition("gamma_max >= 0.03", "test")};
   return program;
 }
 
@@ -149,7 +159,27 @@ TEST(CalibrationStart, ClosedFormsLandNearTheTruth)
     phi_max = std::max(phi_max, p.second);
   EXPECT_NEAR(phi_max, 32.0, 1.0);
   EXPECT_NEAR(s.parameters.cohesion.points[0].second, 30e3, 6e3);
-  EXPECT_GE(s.notes.size(), 3u);
+  // psi from the plastic volumetric slope at the peak (N_psi - 1): 8 deg past kappa = 0.02.
+  EXPECT_NEAR(s.parameters.dilatancy_angle.points[1].second, 8.0, 0.5);
+  EXPECT_GE(s.notes.size(), 4u);
+}
+
+TEST(CalibrationStart, UnloadingBranchesGiveTheElasticConstants)
+{
+  // One unloading branch from 1 % axial strain (past yield): the material point unloads
+  // elastically, so Hooke's law in increments returns E and nu of the truth.
+  LoadingProgram program = axial(2e5);
+  program.stages[0].unload_at = {parse_trigger("eps_zz <= -0.01", "test")};
+  FitTarget probe;
+  probe.program = program;
+  probe.initial_stress = -2e5;
+  probe.substeps = 10;
+  const Response r = simulate(probe, continuum::material_from_case(truth()));
+  ASSERT_EQ(r.branches.size(), 1u);
+  const StartingValues s = closed_form_start(perturbed(), {make_target("unloading", r, program, -2e5, 10, 1.0)});
+  EXPECT_NEAR(s.parameters.youngs_modulus / 80e6, 1.0, 1e-6);
+  EXPECT_NEAR(s.parameters.poisson_ratio, 0.3, 1e-6);
+  EXPECT_NE(s.notes.front().find("unloading"), std::string::npos) << s.notes.front();
 }
 
 TEST(CalibrationIdentifiability, IsochoricShearAloneNamesEAndNu)
@@ -168,6 +198,43 @@ TEST(CalibrationIdentifiability, IsochoricShearAloneNamesEAndNu)
     EXPECT_NE(m.find("E"), std::string::npos) << m;
     EXPECT_NE(m.find("nu"), std::string::npos) << m;
     EXPECT_TRUE(e.parameter == "E" || e.parameter == "nu") << e.parameter;
+  }
+}
+
+TEST(CalibrationRoundTrip, MeanStressRecoversDilatancyFromIsochoricShear)
+{
+  // At constant volume dilatancy shows as the rise of the mean stress, not as eps_v.
+  const std::vector<FitTarget> targets = {made_target(isochoric_past_yield(), 2e5, 0.0, 1)};
+  CalibrationParameters c;
+  c.free_parameters = {"friction[1]", "dilatancy[1]"};
+  c.quantities = {{"q", 1.0}, {"p", 1.0}};
+  c.starting_values = "case";
+  ContinuumParameters start = truth(); // E, nu, c known: only the friction and dilatancy knots are off
+  start.friction_angle.points[1].second = 28.0;
+  start.dilatancy_angle.points[1].second = 3.0;
+  const CalibrationResult r = calibrate(start, targets, c);
+  EXPECT_NEAR(r.value[0] / 32.0, 1.0, 1e-6);
+  EXPECT_NEAR(r.value[1] / 8.0, 1.0, 1e-6);
+  ASSERT_EQ(r.residual_summary.size(), 1u);
+  ASSERT_EQ(r.residual_summary[0].size(), 3u);
+  EXPECT_TRUE(r.residual_summary[0][1].fitted);   // p
+  EXPECT_FALSE(r.residual_summary[0][2].fitted);  // eps_v
+  EXPECT_LT(r.residual_summary[0][0].max_abs, 1e-6);
+}
+
+TEST(CalibrationIdentifiability, VolumeAloneCannotSeeDilatancyInIsochoricShear)
+{
+  // eps_v = 0 along the whole isochoric path whatever psi is: the residuals do not move.
+  const std::vector<FitTarget> targets = {made_target(isochoric_past_yield(), 2e5, 0.0, 1)};
+  CalibrationParameters c;
+  c.free_parameters = {"friction[1]", "dilatancy[1]"};
+  c.quantities = {{"eps_v", 1.0}};
+  c.starting_values = "case";
+  try {
+    calibrate(perturbed(), targets, c);
+    FAIL() << "expected a CalibrationError";
+  } catch (const CalibrationError &e) {
+    EXPECT_NE(std::string(e.what()).find("dilatancy[1]"), std::string::npos) << e.what();
   }
 }
 
