@@ -8,6 +8,7 @@
 #include "common/LoadingProgram.h"
 #include "common/Response.h"
 
+#include <iosfwd>
 #include <memory>
 
 namespace geocomp {
@@ -31,6 +32,13 @@ public:
   virtual ResponseSample measure() = 0;
   virtual std::unique_ptr<EngineState> save() const = 0;
   virtual void restore(const EngineState &state) = 0;
+
+  /// Program checkpoints (ProgramCheckpoint.h): engines whose saved states can go through a
+  /// byte stream say so and implement the two functions below; the others are not
+  /// checkpointed (their runs are short).
+  virtual bool can_write_states() const { return false; }
+  virtual void write_state(std::ostream &out, const EngineState &state) const;
+  virtual std::unique_ptr<EngineState> read_state(std::istream &in) const;
 };
 
 } // namespace geocomp

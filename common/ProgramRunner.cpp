@@ -1,6 +1,7 @@
 #include "common/ProgramRunner.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace geocomp {
@@ -72,10 +73,25 @@ void ProgramRunner::record(ResponseSample s, int stage, int branch, double fract
   }
 }
 
+ProgramStopped::ProgramStopped(double time, std::size_t samples)
+  : std::runtime_error("program stopped on request at t = " + std::to_string(time) + " s after " +
+                       std::to_string(samples) + " samples; checkpoint written"),
+    time(time), samples(samples)
+{
+}
+
+namespace {
+double steady_seconds()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+} // namespace
+
 Response ProgramRunner::run()
 {
   response_ = Response{};
   stage_start_sample_.clear();
+  last_checkpoint_ = steady_seconds();
   response_.engine = engine_.name();
   response_.extras = engine_.extra_columns();
   for (const auto &s : program_.stages)
@@ -84,6 +100,37 @@ Response ProgramRunner::run()
   for (std::size_t i = 0; i < program_.stages.size(); ++i)
     run_stage(static_cast<int>(i));
   return std::move(response_);
+}
+
+Response ProgramRunner::resume(RunnerState state, std::unique_ptr<EngineState> peak)
+{
+  if (state.stage < 0 || state.stage >= static_cast<int>(program_.stages.size()) ||
+      state.stage_start_sample.size() != std::size_t(state.stage) + 1 ||
+      state.fired.size() != program_.stages[state.stage].unload_at.size() || state.response.samples.empty() ||
+      state.has_peak_state != bool(peak))
+    throw std::invalid_argument("ProgramRunner::resume: the checkpoint does not belong to this program");
+  response_ = std::move(state.response);
+  stage_start_sample_.assign(state.stage_start_sample.begin(), state.stage_start_sample.end());
+  last_checkpoint_ = steady_seconds();
+  state.response = Response{};
+  run_stage(state.stage, &state, std::move(peak));
+  for (std::size_t i = std::size_t(state.stage) + 1; i < program_.stages.size(); ++i)
+    run_stage(static_cast<int>(i));
+  return std::move(response_);
+}
+
+void ProgramRunner::maybe_checkpoint(const RunnerState &state, const EngineState *peak)
+{
+  if (!checkpoints_.write)
+    return;
+  const bool stop = checkpoints_.stop_requested && checkpoints_.stop_requested();
+  const double now = steady_seconds();
+  if (!stop && !(checkpoints_.every_seconds > 0.0 && now - last_checkpoint_ >= checkpoints_.every_seconds))
+    return;
+  checkpoints_.write(state, *engine_.save(), peak);
+  last_checkpoint_ = steady_seconds();
+  if (stop)
+    throw ProgramStopped(state.time, state.response.samples.size());
 }
 
 namespace {
@@ -100,21 +147,23 @@ double condition_fraction(const Condition &c, const ResponseSample &start, const
 }
 } // namespace
 
-void ProgramRunner::run_stage(int index)
+void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_ptr<EngineState> peak)
 {
   const Stage &stage = program_.stages[index];
-  stage_start_sample_.push_back(response_.samples.size() - 1);
-  const ResponseSample start = response_.samples.back();
+  if (!from)
+    stage_start_sample_.push_back(response_.samples.size() - 1);
+  const ResponseSample start = response_.samples[stage_start_sample_[index]];
   StageControl control;
   control.stage = &stage;
   control.t0 = start.time;
   control.eps0 = start.strain.diagonal();
   control.direction = 1.0;
-  engine_.begin_control(control);
+  if (!from) // a resumed engine is already following this control (it is part of its state)
+    engine_.begin_control(control);
 
   ConditionContext ctx{start.time, 0.0, &stage};
   std::vector<bool> fired(stage.unload_at.size(), false);
-  std::unique_ptr<EngineState> peak_state;
+  std::unique_ptr<EngineState> peak_state = std::move(peak);
   std::size_t peak_sample = response_.samples.size() - 1;
   const bool wants_peak_state =
     std::any_of(stage.unload_at.begin(), stage.unload_at.end(),
@@ -123,6 +172,13 @@ void ProgramRunner::run_stage(int index)
   const double t_end = start.time + stage.max_duration;
   std::string reason;
   double t = start.time;
+  if (from) {
+    ctx.tau_peak = from->tau_peak;
+    peak_sample = from->peak_sample;
+    t = from->time;
+    for (std::size_t k = 0; k < fired.size(); ++k)
+      fired[k] = from->fired[k] != 0;
+  }
   while (reason.empty()) {
     const double t_next = std::min(t + program_.sample_interval, t_end);
     engine_.advance_to(t_next);
@@ -158,6 +214,24 @@ void ProgramRunner::run_stage(int index)
       } else if (holds(trigger.condition, now, ctx)) {
         fired[k] = true;
         run_branch(index, control, trigger.text, response_.samples.size() - 1, nullptr);
+      }
+    }
+    if (reason.empty() && checkpoints_.write) {
+      RunnerState state;
+      state.stage = index;
+      state.time = t;
+      state.tau_peak = ctx.tau_peak;
+      state.peak_sample = peak_sample;
+      for (bool f : fired)
+        state.fired.push_back(f ? 1 : 0);
+      state.has_peak_state = bool(peak_state);
+      state.stage_start_sample.assign(stage_start_sample_.begin(), stage_start_sample_.end());
+      // The response is copied only when a checkpoint is due.
+      const bool due = (checkpoints_.stop_requested && checkpoints_.stop_requested()) ||
+                       (checkpoints_.every_seconds > 0.0 && steady_seconds() - last_checkpoint_ >= checkpoints_.every_seconds);
+      if (due) {
+        state.response = response_;
+        maybe_checkpoint(state, peak_state.get());
       }
     }
   }

@@ -8,8 +8,10 @@
 // leave from the state saved at the running maximum of tau_max, confirmed once tau_max
 // has fallen by the stage's peak tolerance.
 #include "common/LoadingEngine.h"
+#include "common/ProgramCheckpoint.h"
 
 #include <functional>
+#include <stdexcept>
 
 namespace geocomp {
 
@@ -33,15 +35,39 @@ struct ConditionContext {
 double evaluate(Quantity q, const ResponseSample &s, const ConditionContext &ctx);
 bool holds(const Condition &c, const ResponseSample &s, const ConditionContext &ctx);
 
+/// When and where a run checkpoints itself (ProgramCheckpoint.h). At a main-path sample,
+/// once `every_seconds` of wall time have passed since the last checkpoint (0: never on
+/// time) or when `stop_requested()` says so, the runner calls `write` with its state, the
+/// engine's current state and the engine state at the running peak (null if none).
+struct CheckpointPolicy {
+  double every_seconds = 0.0;
+  std::function<void(const RunnerState &, const EngineState &current, const EngineState *peak)> write;
+  std::function<bool()> stop_requested;
+};
+
+/// Thrown by run()/resume() after a requested stop, once the checkpoint is written.
+struct ProgramStopped : std::runtime_error {
+  ProgramStopped(double time, std::size_t samples);
+  double time;
+  std::size_t samples;
+};
+
 class ProgramRunner {
 public:
   ProgramRunner(const LoadingProgram &program, LoadingEngine &engine);
   /// Called after every recorded sample (progress bars, checkpoints, logs).
   void on_progress(std::function<void(const RunProgress &)> callback) { progress_ = std::move(callback); }
+  void set_checkpoints(CheckpointPolicy policy) { checkpoints_ = std::move(policy); }
   Response run();
+  /// Continues a run from a checkpoint: the engine must already hold the checkpoint's
+  /// current state (engine.restore(*engine.read_state(...))); `peak` is the stored peak
+  /// state, if the checkpoint has one. The result equals the uninterrupted run's.
+  Response resume(RunnerState state, std::unique_ptr<EngineState> peak);
 
 private:
-  void run_stage(int index);
+  /// Runs stage `index` from its start, or from `from` (a checkpoint in it).
+  void run_stage(int index, const RunnerState *from = nullptr, std::unique_ptr<EngineState> peak = nullptr);
+  void maybe_checkpoint(const RunnerState &state, const EngineState *peak);
   void run_branch(int stage_index, const StageControl &main, const std::string &trigger,
                   std::size_t from_sample, const EngineState *from_state);
   void record(ResponseSample s, int stage, int branch, double fraction);
@@ -51,6 +77,8 @@ private:
   Response response_;
   std::vector<std::size_t> stage_start_sample_; ///< main-path sample each stage left from
   std::function<void(const RunProgress &)> progress_;
+  CheckpointPolicy checkpoints_;
+  double last_checkpoint_ = 0.0; ///< steady-clock seconds
 };
 
 } // namespace geocomp

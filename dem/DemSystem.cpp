@@ -1,6 +1,6 @@
 #include "dem/DemSystem.h"
 
-#include "dem/BinaryState.h"
+#include "common/BinaryState.h"
 #include "dem/ContactKinematics.h"
 #include "dem/TimeStep.h"
 

@@ -1,6 +1,6 @@
 #include "dem/NeighbourSearch.h"
 
-#include "dem/BinaryState.h"
+#include "common/BinaryState.h"
 
 #include <algorithm>
 #include <cmath>

@@ -62,6 +62,7 @@ struct DemParameters {
   double servo_max_velocity = 0.05;     ///< [m/s] cap on a servo wall's speed
   double servo_gain = 0.5;              ///< fraction of the stiffness-based correction per step
   unsigned int snapshots = 4;           ///< particle snapshots for localization analysis
+  double checkpoint_interval = 600.0;   ///< [s] wall time between program checkpoints (0: none)
 };
 
 /// A piecewise-linear function of the equivalent plastic strain kappa.

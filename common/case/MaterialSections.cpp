@@ -65,6 +65,10 @@ void declare_dem(dealii::ParameterHandler &prm)
   prm.declare_entry("servo gain", "0.5", Double(1e-6, 1.0),
                     "Fraction of the stiffness-based stress correction applied per step.");
   prm.declare_entry("snapshots", "4", Integer(0, 10000), "Particle snapshots kept for localization analysis.");
+  prm.declare_entry("checkpoint interval", "600", Double(0, 1e9),
+                    "Wall-clock seconds between checkpoints of a DEM program run (<output>/dem-program.ckpt, "
+                    "at main-path samples; 0 = only on SIGINT/SIGTERM). Running the same command again "
+                    "resumes from it, bit for bit.");
   prm.leave_subsection();
 }
 
@@ -79,6 +83,7 @@ DemParameters parse_dem(dealii::ParameterHandler &prm, const Reader &)
   p.servo_max_velocity = prm.get_double("servo max velocity");
   p.servo_gain = prm.get_double("servo gain");
   p.snapshots = prm.get_integer("snapshots");
+  p.checkpoint_interval = prm.get_double("checkpoint interval");
   prm.leave_subsection();
   return p;
 }

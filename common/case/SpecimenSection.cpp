@@ -14,10 +14,12 @@ void declare_specimen(dealii::ParameterHandler &prm)
   prm.enter_subsection("specimen");
   prm.declare_entry("source", "generate", Selection("generate|store|text"),
                     "Where the DEM specimen comes from: 'generate' (radius growth, S0), 'store' "
-                    "(a specimen from an HDF5 core store), 'text' (x y z r per line, box in the header).");
+                    "(a specimen from an HDF5 core store), 'text' (a packing file made elsewhere: see 'text file').");
   prm.declare_entry("store file", "", Anything(), "Core store (HDF5) for source = store.");
   prm.declare_entry("store name", "", Anything(), "Specimen name inside the store.");
-  prm.declare_entry("text file", "", Anything(), "Packing file for source = text (the format of bench/*.xyzr).");
+  prm.declare_entry("text file", "", Anything(), "Packing file for source = text: a LAMMPS/LIGGGHTS data file (atom_style granular) when "
+                    "the name ends in .data, else x y z r per line with the box in a '#' header line (the "
+                    "format of bench/*.xyzr). Its spheres relax frictionless, then are consolidated.");
   prm.declare_entry("particles", "2000", Integer(8, 10000000), "Number of spheres N (S0 reference: 100000).");
   prm.declare_entry("packing fraction", "0.64", Double(0.30, 0.7405),
                     "Target packing fraction eta (S0: 0.6 <= eta < 0.7405; reference 0.69).");

@@ -72,6 +72,7 @@ std::string read_text(const fs::path &file)
 std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const fs::path &dir)
 {
   dem::DemEngineParameters p = dem::DemEngineParameters::from_case(c.dem);
+  p.check_interrupts = false; // SIGINT/SIGTERM stop the program at its next sample (program checkpoint)
   const fs::path cache = dir / "dem-specimen.bin", key_file = dir / "dem-specimen.key";
   const std::string key = specimen_key(c);
   if (fs::exists(cache) && fs::exists(key_file) && read_text(key_file) == key) {

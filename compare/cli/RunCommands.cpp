@@ -5,6 +5,7 @@
 #include "Engines.h"
 #include "Progress.h"
 
+#include "common/ProgramCheckpoint.h"
 #include "common/ProgramRunner.h"
 #include "common/AtomicFile.h"
 #include "common/Hdf5.h"
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <iostream>
 
@@ -98,9 +100,32 @@ public:
       kind_(compare::curve_kind_for(c.program))
   {
     fs::create_directories(dir);
+  }
+  /// A run from the start: no snapshots yet.
+  void start()
+  {
     fs::remove(file_);
     fs::remove(dem::xdmf_path(file_));
   }
+  /// Going on from a program checkpoint at program time `time`, where `next` snapshots
+  /// had been counted: the file keeps the snapshots taken up to then (a killed run may
+  /// have written later ones).
+  void resume(double time, unsigned int next)
+  {
+    next_ = next;
+    if (!fs::exists(file_))
+      return;
+    std::vector<dem::ParticleFields> kept = dem::read_snapshots(file_);
+    const auto later = std::find_if(kept.begin(), kept.end(), [time](const auto &f) { return f.time > time; });
+    if (later == kept.end())
+      return;
+    kept.erase(later, kept.end());
+    fs::remove(file_);
+    fs::remove(dem::xdmf_path(file_));
+    for (const auto &f : kept)
+      dem::append_snapshot(file_, f);
+  }
+  unsigned int next() const { return next_; }
   void operator()(const RunProgress &p)
   {
     if (p.branch != 0 || p.stage != p.stage_count - 1 || next_ > n_)
@@ -204,8 +229,47 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
     if (rank() == 0)
       progress(p);
   });
-  Response r = runner.run();
+  // Program checkpoints (DEM): periodic and on SIGINT/SIGTERM, at main-path samples;
+  // the same command resumes from one written for the same case text by the same build.
+  const fs::path checkpoint = dir / (engine + "-program.ckpt");
+  const std::string key = std::string(GEOCOMP_GIT_HASH) + "\n" + c.text;
+  std::optional<ProgramCheckpoint> resumed;
+  int ranks = 1;
+  MPI_Comm_size(engine_comm, &ranks);
+  if (e->can_write_states() && ranks == 1) {
+    dem::install_interrupt_handlers();
+    CheckpointPolicy policy;
+    policy.every_seconds = c.dem.checkpoint_interval;
+    policy.stop_requested = [] { return dem::interrupt_requested() != 0; };
+    policy.write = [&](const RunnerState &state, const EngineState &current, const EngineState *peak) {
+      write_program_checkpoint(checkpoint, key, state, *e, current, peak, snapshots ? snapshots->next() : 0);
+    };
+    runner.set_checkpoints(policy);
+    if (reuse)
+      resumed = read_program_checkpoint(checkpoint, key, *e);
+  }
+  Response r;
+  try {
+    if (resumed) {
+      std::cout << engine << ": resuming from " << checkpoint.string() << " at t = " << resumed->runner.time
+                << " s (" << resumed->runner.response.samples.size() << " samples)\n";
+      if (snapshots)
+        snapshots->resume(resumed->runner.time, static_cast<unsigned int>(resumed->counter));
+      e->restore(*resumed->current);
+      r = runner.resume(std::move(resumed->runner), std::move(resumed->peak));
+    } else {
+      if (snapshots)
+        snapshots->start();
+      r = runner.run();
+    }
+  } catch (const ProgramStopped &stopped) {
+    progress.finish();
+    throw std::runtime_error(engine + " stopped by a signal at t = " + std::to_string(stopped.time) +
+                             " s; checkpoint " + checkpoint.string() + ": run the same command again to resume");
+  }
   progress.finish();
+  std::error_code ignored;
+  fs::remove(checkpoint, ignored);
   if (const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get()))
     write_mid_plane(*cube, dir);
   if (rank() == 0) {

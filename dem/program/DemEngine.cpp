@@ -1,7 +1,7 @@
 #include "dem/program/DemEngine.h"
 
 #include "common/AtomicFile.h"
-#include "dem/BinaryState.h"
+#include "common/BinaryState.h"
 
 #include <algorithm>
 #include <atomic>
@@ -524,41 +524,28 @@ void get_stage(std::istream &in, Stage &st)
 }
 } // namespace
 
-void DemEngine::write_checkpoint(const std::filesystem::path &path) const
+void DemEngine::write_state(std::ostream &out, const State &s, const DemSystem &system)
 {
-  write_atomically(path, [&](const std::filesystem::path &tmp) {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw std::runtime_error("DemEngine: cannot write checkpoint " + tmp.string());
-    binary::put_tag(out, "GCDEMENG", 1);
-    binary::put(out, s_.L0);
-    binary::put(out, s_.t_origin);
-    binary::put_vector(out, s_.x_start);
-    binary::put(out, s_.density);
-    binary::put(out, s_.mean_diameter);
-    binary::put(out, s_.solid_volume);
-    binary::put(out, s_.dashpot_time);
-    binary::put(out, s_.has_control);
-    put_stage(out, s_.stage);
-    binary::put(out, s_.control_t0);
-    binary::put(out, s_.control_direction);
-    binary::put(out, s_.control_eps0);
-    binary::put(out, s_.rate);
-    system_.write_state(out);
-    binary::put_tag(out, "GCDEMEND", 1);
-    out.flush();
-    if (!out)
-      throw std::runtime_error("DemEngine: writing checkpoint " + tmp.string() + " failed");
-  });
+  binary::put_tag(out, "GCDEMENG", 1);
+  binary::put(out, s.L0);
+  binary::put(out, s.t_origin);
+  binary::put_vector(out, s.x_start);
+  binary::put(out, s.density);
+  binary::put(out, s.mean_diameter);
+  binary::put(out, s.solid_volume);
+  binary::put(out, s.dashpot_time);
+  binary::put(out, s.has_control);
+  put_stage(out, s.stage);
+  binary::put(out, s.control_t0);
+  binary::put(out, s.control_direction);
+  binary::put(out, s.control_eps0);
+  binary::put(out, s.rate);
+  system.write_state(out);
+  binary::put_tag(out, "GCDEMEND", 1);
 }
 
-void DemEngine::read_checkpoint(const std::filesystem::path &path)
+void DemEngine::read_state(std::istream &in, State &s, DemSystem &system)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw std::runtime_error("DemEngine: cannot open checkpoint " + path.string());
-  State s;
-  DemSystem system;
   binary::expect_tag(in, "GCDEMENG", 1);
   binary::get(in, s.L0);
   binary::get(in, s.t_origin);
@@ -576,7 +563,47 @@ void DemEngine::read_checkpoint(const std::filesystem::path &path)
   system.read_state(in);
   binary::expect_tag(in, "GCDEMEND", 1);
   if (system.n_walls() < 6 || s.x_start.size() != system.n_particles())
-    throw binary::StateError("checkpoint " + path.string() + ": inconsistent engine state");
+    throw binary::StateError("checkpoint: inconsistent engine state");
+}
+
+void DemEngine::write_state(std::ostream &out, const EngineState &state) const
+{
+  const auto &saved = dynamic_cast<const Saved &>(state);
+  write_state(out, saved.state, saved.system);
+}
+
+std::unique_ptr<EngineState> DemEngine::read_state(std::istream &in) const
+{
+  auto saved = std::make_unique<Saved>();
+  read_state(in, saved->state, saved->system);
+  return saved;
+}
+
+void DemEngine::write_checkpoint(const std::filesystem::path &path) const
+{
+  write_atomically(path, [&](const std::filesystem::path &tmp) {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out)
+      throw std::runtime_error("DemEngine: cannot write checkpoint " + tmp.string());
+    write_state(out, s_, system_);
+    out.flush();
+    if (!out)
+      throw std::runtime_error("DemEngine: writing checkpoint " + tmp.string() + " failed");
+  });
+}
+
+void DemEngine::read_checkpoint(const std::filesystem::path &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw std::runtime_error("DemEngine: cannot open checkpoint " + path.string());
+  State s;
+  DemSystem system;
+  try {
+    read_state(in, s, system);
+  } catch (const binary::StateError &e) {
+    throw binary::StateError(path.string() + ": " + e.what());
+  }
   system_ = std::move(system);
   s_ = std::move(s);
 }

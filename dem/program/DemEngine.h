@@ -138,6 +138,9 @@ public:
   ResponseSample measure() override;
   std::unique_ptr<EngineState> save() const override;
   void restore(const EngineState &state) override;
+  bool can_write_states() const override { return true; }
+  void write_state(std::ostream &out, const EngineState &state) const override;
+  std::unique_ptr<EngineState> read_state(std::istream &in) const override;
 
   /// Full state (system, reference box, positions at the start, current drive) to a
   /// file, written under a temporary name and renamed.
@@ -176,6 +179,8 @@ private:
   };
 
   DemEngine() = default;
+  static void write_state(std::ostream &out, const State &s, const DemSystem &system);
+  static void read_state(std::istream &in, State &s, DemSystem &system);
   void step();
   StageControl control() const;
   void maybe_checkpoint();

@@ -1,5 +1,6 @@
 #include "dem/program/SpecimenPreparation.h"
 
+#include "dem/program/SpecimenExchange.h"
 #include "dem/program/SpecimenStore.h"
 #include "dem/specimen/Packing.h"
 #include "dem/specimen/SizeDistribution.h"
@@ -225,7 +226,7 @@ PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCri
   } else {
     Packing p;
     try {
-      p = read_xyzr(s.text_file);
+      p = read_packing_file(s.text_file);
     } catch (const PackingFileError &e) {
       throw CaseError(c.file, "specimen/text file", e.what());
     }

@@ -3,7 +3,7 @@
 #include "common/AtomicFile.h"
 #include "common/Hdf5.h"
 #include "common/Version.h"
-#include "dem/BinaryState.h"
+#include "common/BinaryState.h"
 
 #include <algorithm>
 #include <cctype>

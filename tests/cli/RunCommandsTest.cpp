@@ -173,3 +173,41 @@ TEST(CalibrateCommand, RecoversTheModulusOfAMaterialPointTargetAndRefusesMissing
   ASSERT_EQ(run(exe + "calibrate '" + bad.string() + "' > '" + (s.dir / "o3").string() + "' 2>&1"), 2);
   EXPECT_NE(read(s.dir / "o3").find("calibration/targets"), std::string::npos) << read(s.dir / "o3");
 }
+
+TEST(DemCommand, KilledRunResumesFromItsCheckpointWithTheSameCurvesAndSnapshots)
+{
+  // A DEM run checkpointing at every sample is killed (SIGKILL) once its first checkpoint
+  // exists; the same command resumes it, and the curves and particle snapshots equal an
+  // uninterrupted run's bit for bit.
+  Scratch s;
+  fs::path c = make_case(s.dir, "dem", "dem", 5);
+  std::string text = read(c);
+  text = std::regex_replace(text, std::regex("set particles          = [^\n]*"), "set particles = 343");
+  text += "\nsubsection dem\n  set checkpoint interval = 1e-9\nend\n";
+  std::ofstream(c) << text;
+  const std::string exe = std::string("'") + GEOCOMP_EXE + "' ";
+  const fs::path whole = s.dir / "whole", killed = s.dir / "killed";
+  ASSERT_EQ(run(exe + "dem '" + c.string() + "' --output '" + whole.string() + "' > '" + (s.dir / "o1").string() +
+                "' 2>&1"),
+            0)
+    << read(s.dir / "o1");
+  EXPECT_FALSE(fs::exists(whole / "dem-program.ckpt")) << "a finished run removes its checkpoint";
+  const fs::path ckpt = killed / "dem-program.ckpt";
+  run(exe + "dem '" + c.string() + "' --output '" + killed.string() + "' > /dev/null 2>&1 & pid=$!; " +
+      "while [ ! -f '" + ckpt.string() + "' ] && kill -0 $pid 2>/dev/null; do sleep 0.02; done; " +
+      "sleep 0.5; kill -9 $pid; wait $pid");
+  ASSERT_TRUE(fs::exists(ckpt)) << "the run was not killed before it finished: nothing to resume";
+  ASSERT_EQ(run(exe + "dem '" + c.string() + "' --output '" + killed.string() + "' > '" + (s.dir / "o2").string() +
+                "' 2>&1"),
+            0)
+    << read(s.dir / "o2");
+  EXPECT_NE(read(s.dir / "o2").find("resuming from"), std::string::npos) << read(s.dir / "o2");
+  for (const char *group : {"/response", "/branches"}) {
+    const std::string a = read_command(std::string("h5dump -g ") + group + " '" + (killed / "dem.h5").string() + "' | tail -n +2");
+    EXPECT_GT(a.size(), 1000u) << group;
+    EXPECT_EQ(a, read_command(std::string("h5dump -g ") + group + " '" + (whole / "dem.h5").string() + "' | tail -n +2"))
+      << group;
+  }
+  EXPECT_EQ(read_command("h5dump -g /snapshots '" + (killed / "dem-fields.h5").string() + "' | tail -n +2"),
+            read_command("h5dump -g /snapshots '" + (whole / "dem-fields.h5").string() + "' | tail -n +2"));
+}

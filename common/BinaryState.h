@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace geocomp::dem::binary {
+namespace geocomp::binary {
 
 /// A checkpoint that cannot be read (truncated, other build, other kind of file).
 struct StateError : std::runtime_error
@@ -79,4 +79,4 @@ inline void expect_tag(std::istream& in, const char (&tag)[9], std::uint32_t ver
   if (v != version) throw StateError(std::string("checkpoint: section '") + tag + "' has another version");
 }
 
-}  // namespace geocomp::dem::binary
+}  // namespace geocomp::binary
