@@ -3,10 +3,11 @@
 # isochoric lambda = 0 on 5 000 spheres (peak, residual strains of the five branches,
 # largest inertial number) and constant lateral pressure on 3 000 spheres for friction
 # angles 0 ... 60 deg (peak, secant modulus, largest compaction). About 10 minutes on 2 cores.
+# GEOCOMP_EXE=path runs another build of geocomp.
 # Usage: bench/run-s0-small.sh [--force]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-exe=build/compare/cli/geocomp
+exe=${GEOCOMP_EXE:-build/compare/cli/geocomp}
 [ -x "$exe" ] || scripts/build.sh
 column() { # dataset of a results file, one value per line
   h5dump -y -w 0 -d "$2" "$1" | sed -n '/DATA {/,/}/p' | sed -n 2p | tr ',' '\n' | sed 's/ //g' | grep -v '^$'

@@ -70,7 +70,8 @@ PreparedSpecimen from_store(const CaseDescription &c)
   try {
     stored = read_stored_specimen(s.store_file, s.store_name);
   } catch (const StoreError &e) {
-    throw CaseError(c.file, e.missing_name ? "specimen/store name" : "specimen/store file", e.what());
+    throw CaseError(c.file, e.missing_name ? "specimen/store name" : "specimen/store file",
+                    std::string(e.what()) + " (a pack case with this store file and name builds it: geocomp pack <case>)");
   }
   // The stored state carries its contact law; a case that asks for another friction or
   // restitution would start out of equilibrium, so it is refused.
