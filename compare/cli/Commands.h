@@ -50,6 +50,7 @@ Command calibrate_command();
 Command sweep_command();
 Command pack_command();
 Command export_command();
+Command rate_sweep_command();
 /// Starts MPI (and PETSc) once, for the commands that run engines (deal.II's MPI_InitFinalize:
 /// one thread per rank for deal.II's task parallelism; the DEM uses OpenMP).
 void ensure_mpi();

@@ -124,9 +124,26 @@ TEST(CommandLine, UnreadableCaseAndUnknownOptionsAreBadInput)
 
 TEST(CommandLine, ShippedCasesPassCheck)
 {
+  // S1's rate-sweep cases (cases/s1_*.prm) have their own format and checker.
   for (const auto &e : fs::recursive_directory_iterator(source_dir() / "cases"))
     if (e.path().extension() == ".prm" || e.path().extension() == ".json") {
-      const Result r = run(fs::temp_directory_path(), "check '" + fs::absolute(e.path()).string() + "'");
+      const bool s1 = e.path().filename().string().rfind("s1_", 0) == 0;
+      const std::string file = "'" + fs::absolute(e.path()).string() + "'";
+      const Result r = run(fs::temp_directory_path(), s1 ? "rate-sweep " + file + " --check" : "check " + file);
       EXPECT_EQ(r.code, 0) << e.path() << ": " << r.err;
     }
+}
+
+TEST(CommandLine, ExportRefusesMissingStoresAndNamesWithExitTwo)
+{
+  const fs::path cwd = fs::temp_directory_path();
+  const std::string store = "'" + fs::absolute(source_dir() / "cases/store/small.h5").string() + "'";
+  Result r = run(cwd, "export /nonexistent/store.h5");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("/nonexistent/store.h5"), std::string::npos) << r.err;
+  r = run(cwd, "export " + store + " no-such-specimen /tmp/x.xyzr");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no-such-specimen"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists("/tmp/x.xyzr"));
+  EXPECT_EQ(run(cwd, "export " + store + " a-name").code, 2) << "a name without an output file is a usage error";
 }
