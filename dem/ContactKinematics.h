@@ -17,7 +17,10 @@
 // $m^* = m$, $R^* = R$ (the limits of the pair formulas).
 //
 // `spin` is the mean spin of the two bodies about n, used to turn the tangential spring
-// with the pair about the normal (DEM-NOTES section 2, Yade's spin term).
+// with the pair about the normal (DEM-NOTES section 2, Yade's spin term). `w_rel`
+// ($\omega_j - \omega_i$) is filled only for laws with a rolling part, and `bonding` tells a
+// cohesion part whether bonds may form at this contact (the engine sets it false for
+// walls unless asked otherwise).
 #pragma once
 
 #include "dem/Types.h"
@@ -36,6 +39,8 @@ struct ContactKinematics
   double spin = 0.0;       ///< (omega_i + omega_j) . n / 2
   double dt = 0.0;         ///< increment for the history (0: evaluate without advancing)
   double mu = 0.0;         ///< Coulomb friction coefficient of this pair of surfaces
+  Vec3 w_rel;              ///< omega_j - omega_i (rolling parts only; not set otherwise)
+  bool bonding = true;     ///< cohesion parts: bonds and adhesion may form here
 };
 
 /// Fills the geometric part of `k` for spheres i and j in contact (r = |d| > 0 given).

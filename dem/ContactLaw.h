@@ -1,27 +1,41 @@
-// @sect3{The ContactLaw class template: a normal part times a tangential part}
+// @sect3{The ContactLaw class template: normal x tangential x rolling x cohesion parts}
 //
 // Why it exists: a contact law is a composition of orthogonal parts (MercuryDPM's
-// Species<Normal, Friction>), chosen at compile time so the per-contact loop has no
-// branch on the law type (Lethe PR #300). `ContactLaw<Normal, Tangential>` calls
+// Species<Normal, Friction, Adhesive>), chosen at compile time so the per-contact loop has
+// no branch on the law type (Lethe PR #300).
+// `ContactLaw<Normal, Tangential, Rolling, Cohesion>` calls
 // `Normal::evaluate(kinematics)` and hands its `NormalResponse` to
-// `Tangential::evaluate(kinematics, normal_response, history)`. Rolling and cohesion
-// parts will be further template parameters. The same object, and therefore the same
-// code, evaluates particle-particle and particle-wall contacts; only the kinematics
-// builder differs (ContactKinematics.h).
+// `Tangential::evaluate(kinematics, normal_response, history)`; a rolling part adds a
+// moment $M_r$ on j (LinearRolling.h, S2) and a cohesion part adds bond and adhesion
+// forces that outlive the overlap (S3Bonding.h, S3). Rolling and Cohesion default to
+// the "none" parts (NoContactPart.h): then `has_memory` is false, the law takes only the
+// tangential history, and the code compiled for it is the plain normal x tangential
+// law. The same object evaluates particle-particle and particle-wall contacts; only
+// the kinematics builder differs (ContactKinematics.h).
 //
-// The force on j is $F = F_n n + F_t$. The per-step losses are returned for the energy
-// ledger: normal dashpot $-(F_n - F_n^{el})v_n\Delta t$ (this also counts the clamp
-// correctly), tangential dashpot and sliding from the tangential part.
+// The force on j is $F = F_n n + F_t$ (plus the moment $M_r$ on j, $-M_r$ on i). The
+// per-step losses are returned for the energy ledger: normal dashpot
+// $-(F_n - F_n^{el})v_n\Delta t$ (this also counts the clamp correctly), tangential dashpot,
+// sliding and rolling slip, and the energy released by bonds.
+//
+// With a cohesion part, a contact is evaluated while bodies are apart ($\delta \le 0$): the
+// normal, tangential and rolling parts then give nothing and their springs reset (the
+// grains do not touch), and only bonds and adhesion act.
 //
 // `ContactModel` is the closed set of laws a run can choose at run time; the engine
 // dispatches on it once per step (std::visit), outside the contact loop.
 #pragma once
 
 #include "dem/ContactKinematics.h"
+#include "dem/ContactMemory.h"
 #include "dem/HertzNormal.h"
 #include "dem/LinearNormal.h"
+#include "dem/LinearRolling.h"
 #include "dem/LinearTangential.h"
 #include "dem/MindlinTangential.h"
+#include "dem/NoContactPart.h"
+#include "dem/S3Bonding.h"
+#include "dem/StickSlipTangential.h"
 
 #include <type_traits>
 #include <variant>
@@ -30,35 +44,60 @@ namespace geocomp::dem {
 
 struct ContactForce
 {
-  double normal = 0.0;       ///< F_n (> 0 repulsive)
-  Vec3 tangential;           ///< F_t on j
-  double damping_loss = 0.0; ///< dashpot energy dissipated in this increment
-  double friction_loss = 0.0;///< sliding energy dissipated in this increment
+  double normal = 0.0;        ///< F_n (> 0 repulsive)
+  Vec3 tangential;            ///< F_t on j
+  Vec3 moment;                ///< rolling moment on j (laws with a rolling part only)
+  double damping_loss = 0.0;  ///< dashpot energy dissipated in this increment
+  double friction_loss = 0.0; ///< sliding (and rolling slip) energy dissipated in this increment
+  double bond_loss = 0.0;     ///< energy released by bond breakage / adhesion formation
 };
 
 struct ContactEnergy
 {
   double normal = 0.0;
   double tangential = 0.0;
+  double rolling = 0.0;
+  double bond = 0.0;          ///< bond spring + adhesion potential (may be negative)
 };
 
-template <class Normal, class Tangential>
+template <class Normal, class Tangential, class Rolling = NoRolling, class Cohesion = NoCohesion>
 class ContactLaw
 {
 public:
   using NormalPart = Normal;
   using TangentialPart = Tangential;
+  using RollingPart = Rolling;
+  using CohesionPart = Cohesion;
+  static constexpr bool has_rolling = Rolling::enabled;
+  static constexpr bool has_cohesion = Cohesion::enabled;
+  /// The law needs a ContactMemory per contact besides the tangential history.
+  static constexpr bool has_memory = has_rolling || has_cohesion;
 
   ContactLaw() = default;
   ContactLaw(const Normal& n, const Tangential& t) : normal_(n), tangential_(t) {}
+  ContactLaw(const Normal& n, const Tangential& t, const Rolling& r) : normal_(n), tangential_(t), rolling_(r) {}
+  ContactLaw(const Normal& n, const Tangential& t, const Rolling& r, const Cohesion& c)
+    : normal_(n), tangential_(t), rolling_(r), cohesion_(c)
+  {}
 
   const Normal& normal() const { return normal_; }
   const Tangential& tangential() const { return tangential_; }
+  const Rolling& rolling() const { return rolling_; }
+  const Cohesion& cohesion() const { return cohesion_; }
 
-  /// Evaluates the law at kinematics `k`, advancing the tangential history `shear`
-  /// by k.dt (k.dt == 0 evaluates without advancing it).
+  /// Largest gap at which a contact of effective radius R* still carries force (0
+  /// without a cohesion part): the neighbour lists must reach this far.
+  double reach(double r_eff) const
+  {
+    if constexpr (has_cohesion) return cohesion_.reach(r_eff);
+    else return 0.0 * r_eff;
+  }
+
+  /// Evaluates a law without memory at kinematics `k` (delta > 0), advancing the
+  /// tangential history `shear` by k.dt (k.dt == 0 evaluates without advancing it).
   ContactForce evaluate(const ContactKinematics& k, Vec3& shear) const
   {
+    static_assert(!has_memory, "this law needs its ContactMemory: evaluate(k, shear, memory)");
     const NormalResponse nr = normal_.evaluate(k);
     const TangentialResponse tr = tangential_.evaluate(k, nr, shear);
     ContactForce f;
@@ -69,33 +108,97 @@ public:
     return f;
   }
 
+  /// Evaluates a law with memory (also for delta <= 0 when it has a cohesion part).
+  ContactForce evaluate(const ContactKinematics& k, Vec3& shear, ContactMemory& memory) const
+  {
+    ContactForce f;
+    f.tangential.setZero();
+    f.moment.setZero();
+    if (k.overlap > 0.0) {
+      const NormalResponse nr = normal_.evaluate(k);
+      const TangentialResponse tr = tangential_.evaluate(k, nr, shear);
+      f.normal = nr.force;
+      f.tangential = tr.force;
+      f.damping_loss = -(nr.force - nr.elastic) * k.v_n * k.dt + tr.damping_loss;
+      f.friction_loss = tr.friction_loss;
+      if constexpr (has_rolling) {
+        const RollingResponse rr = rolling_.evaluate(k, tangential_stiffness(k, nr), nr.force, memory.rolling);
+        f.moment = rr.moment;
+        f.friction_loss += rr.loss;
+      }
+    } else {
+      shear.setZero();
+      if constexpr (has_rolling) memory.rolling.setZero();
+    }
+    if constexpr (has_cohesion) {
+      const BondResponse b = cohesion_.evaluate(k, memory);
+      f.normal += b.normal;
+      f.tangential += b.tangential;
+      f.bond_loss = b.loss;
+    }
+    return f;
+  }
+
   /// Energy stored in the springs of one contact (no side effects on the history).
   ContactEnergy elastic_energy(double overlap, double m_eff, double r_eff, const Vec3& shear) const
   {
+    ContactKinematics k;
+    k.overlap = overlap;
+    k.m_eff = m_eff;
+    k.r_eff = r_eff;
+    return elastic_energy(k, shear, ContactMemory{});
+  }
+
+  /// The same with the contact's memory and friction coefficient (k.overlap, k.m_eff,
+  /// k.r_eff and k.mu are read).
+  ContactEnergy elastic_energy(const ContactKinematics& k, const Vec3& shear, const ContactMemory& memory) const
+  {
     ContactEnergy e;
-    e.normal = normal_.elastic_energy(overlap, m_eff, r_eff);
-    if constexpr (std::is_same_v<Tangential, MindlinTangential>) {
-      e.tangential = tangential_.elastic_energy(overlap, r_eff, shear);
-    } else {
-      ContactKinematics k;
-      k.overlap = overlap;
-      k.m_eff = m_eff;
-      k.r_eff = r_eff;
-      e.tangential = tangential_.elastic_energy(normal_.evaluate(k), shear);
+    if (k.overlap > 0.0) {
+      e.normal = normal_.elastic_energy(k.overlap, k.m_eff, k.r_eff);
+      const NormalResponse nr = normal_.evaluate(k);
+      if constexpr (std::is_same_v<Tangential, MindlinTangential>)
+        e.tangential = tangential_.elastic_energy(k.overlap, k.r_eff, shear);
+      else if constexpr (std::is_same_v<Tangential, StickSlipTangential>)
+        e.tangential = tangential_.elastic_energy(k.mu, nr, shear);
+      else
+        e.tangential = tangential_.elastic_energy(nr, shear);
+      if constexpr (has_rolling)
+        e.rolling = rolling_.elastic_energy(tangential_stiffness(k, nr), k.r_eff, memory.rolling);
     }
+    if constexpr (has_cohesion) e.bond = cohesion_.elastic_energy(k.overlap, k.r_eff, memory);
     return e;
+  }
+
+  /// Tangential stiffness k_t at this contact (the rolling stiffness is k_t R*^2).
+  double tangential_stiffness(const ContactKinematics& k, const NormalResponse& nr) const
+  {
+    if constexpr (std::is_same_v<Tangential, MindlinTangential>) return tangential_.stiffness(k.overlap, k.r_eff);
+    else if constexpr (std::is_same_v<Tangential, StickSlipTangential>) return tangential_.stiffness(k.mu, nr);
+    else return tangential_.stiffness(nr);
   }
 
 private:
   Normal normal_{};
   Tangential tangential_{};
+  Rolling rolling_{};
+  Cohesion cohesion_{};
 };
 
 /// S0: linear spring-dashpot with incremental Coulomb spring.
 using LinearSpringDashpot = ContactLaw<LinearNormal, LinearTangential>;
 /// S4: Hertz with nonlinear damping and Mindlin's tangential stiffness.
 using HertzMindlin = ContactLaw<HertzNormal, MindlinTangential>;
+/// S2: PFC's rolling resistance linear model (linear spring-dashpot + rolling spring).
+using LinearRollingResistance = ContactLaw<LinearNormal, LinearTangential, LinearRolling>;
+/// S4's Hertz-Mindlin with a rolling spring.
+using HertzMindlinRolling = ContactLaw<HertzNormal, MindlinTangential, LinearRolling>;
+/// Linear spring-dashpot with Coulomb friction, rolling resistance and S3's bonds.
+using LinearCohesive = ContactLaw<LinearNormal, LinearTangential, LinearRolling, S3Bonding>;
+/// S3's soil: linear normal, anchor-spring friction with k_phi, bonds and adhesion.
+using S3Soil = ContactLaw<LinearNormal, StickSlipTangential, LinearRolling, S3Bonding>;
 
-using ContactModel = std::variant<LinearSpringDashpot, HertzMindlin>;
+using ContactModel =
+  std::variant<LinearSpringDashpot, HertzMindlin, LinearRollingResistance, HertzMindlinRolling, LinearCohesive, S3Soil>;
 
 }  // namespace geocomp::dem

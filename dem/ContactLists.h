@@ -13,8 +13,13 @@
 //
 // Pairs are stored with id_i < id_j and the slot vectors act on j. Wall slots are sorted
 // by particle index, so each particle's wall contacts are one contiguous range.
+//
+// Laws with rolling or cohesion parts keep a ContactMemory per slot in `pair_memory` /
+// `wall_memory` (same order as the slots); `with_memory` is false and both arrays are
+// empty for the plain laws, so their slots are exactly what they were.
 #pragma once
 
+#include "dem/ContactMemory.h"
 #include "dem/Types.h"
 
 #include <cstddef>
@@ -58,11 +63,15 @@ struct ContactLists
   std::vector<WallSlot> walls;
   /// Wall slots of particle p: walls[wall_offset[p] .. wall_offset[p+1]).
   std::vector<std::uint32_t> wall_offset;
+  /// Per-slot memory of the optional contact parts (only when with_memory).
+  bool with_memory = false;
+  std::vector<ContactMemory> pair_memory, wall_memory;
 
   std::size_t memory_bytes() const
   {
     return pairs.capacity() * sizeof(PairSlot) + walls.capacity() * sizeof(WallSlot) +
-           (incident_offset.capacity() + incident.capacity() + wall_offset.capacity()) * sizeof(std::uint32_t);
+           (incident_offset.capacity() + incident.capacity() + wall_offset.capacity()) * sizeof(std::uint32_t) +
+           (pair_memory.capacity() + wall_memory.capacity()) * sizeof(ContactMemory);
   }
 };
 

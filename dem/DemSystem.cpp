@@ -2,12 +2,14 @@
 
 #include "common/BinaryState.h"
 #include "dem/ContactKinematics.h"
+#include "dem/LegacyState.h"
 #include "dem/TimeStep.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 namespace geocomp::dem {
@@ -49,6 +51,20 @@ inline double local_damping(Vec3& f, const Vec3& v, double lambda)
     f[a] -= lambda * std::abs(f[a]) * s;
   }
   return power;
+}
+
+/// A contact of a law with memory whose bodies left the interaction range: springs
+/// reset, an intact bond breaks (it is beyond its limit), adhesion ruptures.
+inline void separate(ContactMemory& m)
+{
+  if (!m.active()) return;
+  m.rolling.setZero();
+  if (m.has(ContactMemory::bonded)) {
+    m.state = (m.state & ~ContactMemory::bonded) | ContactMemory::bond_broken;
+    m.bond.setZero();
+    m.bond_origin = 0.0;
+  }
+  m.state &= ~ContactMemory::adhesion_active;
 }
 }  // namespace
 
@@ -99,6 +115,8 @@ double change_radius(ParticleStore& p, Index k, double radius)
 
 void DemSystem::set_radius(ParticleId id, double radius)
 {
+  if (store_.flags.at(index_of_.at(id)) & flag::member)
+    throw std::invalid_argument("DemSystem::set_radius: the sphere is a clump member");
   radius_growth_ += std::max(0.0, change_radius(store_, index_of_.at(id), radius));
   invalidate();
 }
@@ -107,6 +125,7 @@ void DemSystem::set_radii(const std::vector<double>& radii)
 {
   if (radii.size() != index_of_.size()) throw std::invalid_argument("DemSystem::set_radii: one radius per particle");
   double growth = 0.0;
+  if (!clumps_.empty()) throw std::logic_error("DemSystem::set_radii: not available with clumps");
   for (ParticleId id = 0; id < radii.size(); ++id)
     growth = std::max(growth, change_radius(store_, index_of_[id], radii[id]));
   radius_growth_ += growth;  // a bound on each particle's increase since the build
@@ -134,6 +153,8 @@ void DemSystem::set_angular_velocity(ParticleId id, const Vec3& w)
 
 void DemSystem::set_fixed(ParticleId id, bool fixed)
 {
+  if (store_.flags.at(index_of_.at(id)) & flag::member)
+    throw std::invalid_argument("DemSystem::set_fixed: the sphere is a clump member");
   store_.set_fixed(index_of_.at(id), fixed);
   rebuild_requested_ = true;  // pairs of two fixed particles are not listed
   invalidate();
@@ -163,7 +184,22 @@ std::size_t DemSystem::add_box(const Vec3& lo, const Vec3& hi, double mu_p)
 void DemSystem::set_contact_model(const ContactModel& m)
 {
   model_ = m;
+  // Memory arrays and list range must follow the law: rebuild when they change.
+  if (law_has_memory() != lists_.with_memory || law_reach() != search_.reach()) rebuild_requested_ = true;
   invalidate();
+}
+
+bool DemSystem::law_has_memory() const
+{
+  return std::visit([](const auto& law) { return std::decay_t<decltype(law)>::has_memory; }, model_);
+}
+
+double DemSystem::law_reach() const
+{
+  double r_max = 0.0;
+  for (double r : store_.radius) r_max = std::max(r_max, r);
+  // reach grows with R*; R* <= R_max for any pair or wall contact.
+  return std::visit([&](const auto& law) { return law.reach(r_max); }, model_);
 }
 
 void DemSystem::set_friction(double mu)
@@ -194,11 +230,13 @@ double DemSystem::critical_time_step() const
   return std::visit(
     [&](const auto& law) -> double {
       using L = std::decay_t<decltype(law)>;
-      if constexpr (std::is_same_v<L, LinearSpringDashpot>) {
+      if constexpr (std::is_same_v<typename L::NormalPart, LinearNormal>) {
         // Wall contact (m* = m, R* = R) is the stiffest for S0's stiffness formula.
         const double kn = std::max(law.normal().stiffness(0.5 * m_min, 0.5 * r_min),
                                    law.normal().stiffness(m_min, r_min));
-        const double kt = law.tangential().stiffness_for(kn);
+        double kt = kn;  // S3's anchor spring: mu F_n / delta*_tau, below k_n for small overlaps
+        if constexpr (std::is_same_v<typename L::TangentialPart, LinearTangential>)
+          kt = law.tangential().stiffness_for(kn);
         return spring_time_scale(m_min, std::max(kn, 3.5 * kt));
       } else {
         const auto& p = law.normal().parameters();
@@ -220,6 +258,8 @@ void DemSystem::refresh_index()
 
 void DemSystem::rebuild()
 {
+  lists_.with_memory = law_has_memory();
+  search_.set_reach(law_reach());
   if (search_.rebuild(store_, walls_, lists_, threads_)) refresh_index();
   rebuild_requested_ = false;
   radius_growth_ = 0.0;
@@ -353,12 +393,16 @@ void DemSystem::step()
   wall_force_old_.resize(walls_.size());
   for (std::size_t w = 0; w < walls_.size(); ++w) wall_force_old_[w] = walls_[w].force;
 
-  const double max_d2 = overdamped_ > 0.0 ? drift_overdamped(dt_) : kick_drift(dt_);
+  if (overdamped_ > 0.0 && !clumps_.empty())
+    throw std::logic_error("DemSystem::step: first-order dynamics is not available with clumps");
+  double max_d2 = overdamped_ > 0.0 ? drift_overdamped(dt_) : kick_drift(dt_);
+  if (!clumps_.empty()) max_d2 = std::max(max_d2, kick_drift_clumps(dt_));
   moved2_ = max_d2;
   for (PlaneWall& w : walls_) w.point += dt_ * w.velocity;
   if (rebuild_requested_ || search_.needs_rebuild(with_growth(max_d2, radius_growth_), walls_)) rebuild();
   compute_forces(dt_);
   if (overdamped_ == 0.0) losses_.dissipated_local += kick(dt_);
+  if (!clumps_.empty()) kick_clumps(dt_);
 
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     PlaneWall& w = walls_[k];
@@ -386,6 +430,7 @@ void DemSystem::compute_forces(double dt_history)
       else compute_forces_with<std::decay_t<decltype(law)>, false>(law, dt_history);
     },
     model_);
+  if (!clumps_.empty()) gather_clump_loads();
 }
 
 template <class Law, bool Track>
@@ -401,15 +446,18 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
   const std::size_t n = store_.size();
   const std::size_t nbp = n_blocks(pairs.size());
   const std::size_t nbw = n_blocks(wslots.size());
-  if constexpr (Track) block_losses_.assign(2 * (nbp + nbw), 0.0);
+  if constexpr (Track) block_losses_.assign(3 * (nbp + nbw), 0.0);
   const double mu = mu_;
+  [[maybe_unused]] auto& pmem = lists_.pair_memory;
+  [[maybe_unused]] auto& wmem = lists_.wall_memory;
+  [[maybe_unused]] const bool wall_bonding = wall_bonding_;
 
 #pragma omp parallel num_threads(threads_)
   {
     // Pass A: particle pairs.
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < std::int64_t(nbp); ++b) {
-      double damp = 0.0, fric = 0.0;
+      double damp = 0.0, fric = 0.0, bond = 0.0;
       const std::size_t end = std::min(pairs.size(), std::size_t(b + 1) * kBlock);
       for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
         PairSlot& s = pairs[c];
@@ -417,7 +465,9 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         const Vec3 d = x[j] - x[i];
         const double r2 = d.squaredNorm();
         const double rs = R[i] + R[j];
-        if (r2 >= rs * rs || r2 == 0.0) {
+        double range = rs;
+        if constexpr (Law::has_cohesion) range += law.reach(R[i] * R[j] / rs);
+        if (r2 >= range * range || r2 == 0.0) {
           // Apart: the slot holds zeros (written only when it did not already).
           if (s.overlap != 0.0 || s.shear.squaredNorm() != 0.0) {
             s.overlap = 0.0;
@@ -425,6 +475,7 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
             s.force.setZero();
             s.lever.setZero();
           }
+          if constexpr (Law::has_memory) separate(pmem[c]);
           continue;
         }
         ContactKinematics k;
@@ -432,35 +483,46 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         k.overlap_old = s.overlap;
         k.dt = dt_h;
         k.mu = mu;
-        const ContactForce f = law.evaluate(k, s.shear);
+        ContactForce f;
+        if constexpr (Law::has_memory) {
+          if constexpr (Law::has_rolling) k.w_rel = w[j] - w[i];
+          f = law.evaluate(k, s.shear, pmem[c]);
+        } else {
+          f = law.evaluate(k, s.shear);
+        }
         s.force = f.normal * k.normal + f.tangential;
         s.lever = k.normal.cross(f.tangential);
         s.overlap = k.overlap;
         if constexpr (Track) {
           damp += f.damping_loss;
           fric += f.friction_loss;
+          bond += f.bond_loss;
         }
       }
       if constexpr (Track) {
-        block_losses_[2 * b] = damp;
-        block_losses_[2 * b + 1] = fric;
+        block_losses_[3 * b] = damp;
+        block_losses_[3 * b + 1] = fric;
+        block_losses_[3 * b + 2] = bond;
       }
     }
     // Pass A: particle-wall contacts, through the same law.
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < std::int64_t(nbw); ++b) {
-      double damp = 0.0, fric = 0.0;
+      double damp = 0.0, fric = 0.0, bond = 0.0;
       const std::size_t end = std::min(wslots.size(), std::size_t(b + 1) * kBlock);
       for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
         WallSlot& s = wslots[c];
         const PlaneWall& wall = walls_[s.wall];
         const Index p = s.particle;
         const double h = wall.distance(x[p]);
-        if (h >= R[p]) {
+        double range = R[p];
+        if constexpr (Law::has_cohesion) range += wall_bonding ? law.reach(R[p]) : 0.0;
+        if (h >= range) {
           s.overlap = 0.0;
           s.shear.setZero();
           s.force.setZero();
           s.lever.setZero();
+          if constexpr (Law::has_memory) separate(wmem[c]);
           continue;
         }
         ContactKinematics k;
@@ -468,18 +530,27 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         k.overlap_old = s.overlap;
         k.dt = dt_h;
         k.mu = wall.mu;
-        const ContactForce f = law.evaluate(k, s.shear);
+        ContactForce f;
+        if constexpr (Law::has_memory) {
+          if constexpr (Law::has_rolling) k.w_rel = w[p];  // the wall does not spin
+          k.bonding = wall_bonding;
+          f = law.evaluate(k, s.shear, wmem[c]);
+        } else {
+          f = law.evaluate(k, s.shear);
+        }
         s.force = f.normal * k.normal + f.tangential;
         s.lever = k.normal.cross(f.tangential);
         s.overlap = k.overlap;
         if constexpr (Track) {
           damp += f.damping_loss;
           fric += f.friction_loss;
+          bond += f.bond_loss;
         }
       }
       if constexpr (Track) {
-        block_losses_[2 * (nbp + b)] = damp;
-        block_losses_[2 * (nbp + b) + 1] = fric;
+        block_losses_[3 * (nbp + b)] = damp;
+        block_losses_[3 * (nbp + b) + 1] = fric;
+        block_losses_[3 * (nbp + b) + 2] = bond;
       }
     }
     // Pass B: gather per particle, incident slots in ascending order.
@@ -496,11 +567,16 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         if (inc[e] & 1u) f += s.force;
         else f -= s.force;
         t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
+        if constexpr (Law::has_rolling) {       // M_r on j, -M_r on i
+          if (inc[e] & 1u) t += pmem[inc[e] >> 1].rolling;
+          else t -= pmem[inc[e] >> 1].rolling;
+        }
       }
       for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
         const WallSlot& s = wslots[e];
         f += s.force;
         t -= (Rp - 0.5 * s.overlap) * s.lever;
+        if constexpr (Law::has_rolling) t += wmem[e].rolling;
       }
       store_.force[p] = f;
       store_.torque[p] = t;
@@ -509,8 +585,9 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
 
   if constexpr (Track) {
     for (std::size_t b = 0; b < nbp + nbw; ++b) {
-      losses_.dissipated_damping += block_losses_[2 * b];
-      losses_.dissipated_friction += block_losses_[2 * b + 1];
+      losses_.dissipated_damping += block_losses_[3 * b];
+      losses_.dissipated_friction += block_losses_[3 * b + 1];
+      losses_.dissipated_bonds += block_losses_[3 * b + 2];
     }
   }
 
@@ -521,13 +598,16 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
     wall.stiffness = 0.0;
     wall.n_contacts = 0;
   }
-  for (const WallSlot& s : wslots) {
-    if (!(s.overlap > 0.0)) continue;
+  for (std::size_t c = 0; c < wslots.size(); ++c) {
+    const WallSlot& s = wslots[c];
+    if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;
     PlaneWall& wall = walls_[s.wall];
     const Index p = s.particle;
     const Vec3 xc = x[p] - (R[p] - s.overlap) * wall.normal;  // contact point on the plane
     wall.force -= s.force;
     wall.torque += (xc - wall.point).cross(-s.force);
+    if constexpr (Law::has_rolling) wall.torque -= wmem[c].rolling;  // the wall receives -M_r
+    if (!(s.overlap > 0.0)) continue;  // a bond across a gap: force, but no contact
     ContactKinematics k;
     k.overlap = s.overlap;
     k.m_eff = store_.mass[p];
@@ -545,7 +625,7 @@ std::vector<ContactRecord> DemSystem::contacts() const
   const auto& x = store_.x;
   const auto& R = store_.radius;
   for (const PairSlot& s : lists_.pairs) {
-    if (!(s.overlap > 0.0)) continue;
+    if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;  // apart (a bond may pull across a gap)
     ContactRecord c;
     c.i = store_.id[s.i];
     c.j = store_.id[s.j];
@@ -559,7 +639,7 @@ std::vector<ContactRecord> DemSystem::contacts() const
     out.push_back(c);
   }
   for (const WallSlot& s : lists_.walls) {
-    if (!(s.overlap > 0.0)) continue;
+    if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;
     const PlaneWall& wall = walls_[s.wall];
     ContactRecord c;
     c.wall = true;
@@ -587,31 +667,63 @@ std::size_t DemSystem::n_touching_pairs() const
 std::vector<ContactState> DemSystem::export_contact_state() const
 {
   std::vector<ContactState> out;
-  for (const PairSlot& s : lists_.pairs)
-    if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0)
-      out.push_back({false, store_.id[s.i], store_.id[s.j], s.overlap, s.shear});
-  for (const WallSlot& s : lists_.walls)
-    if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0)
-      out.push_back({true, s.wall, store_.id[s.particle], s.overlap, s.shear});
+  const bool mem = lists_.with_memory;
+  std::vector<std::uint64_t> listed;  // pair keys exported from slots
+  for (std::size_t c = 0; c < lists_.pairs.size(); ++c) {
+    const PairSlot& s = lists_.pairs[c];
+    const ContactMemory m = mem ? lists_.pair_memory[c] : ContactMemory{};
+    if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0 || m.active()) {
+      out.push_back({false, store_.id[s.i], store_.id[s.j], s.overlap, s.shear, m});
+      listed.push_back(pair_key(store_.id[s.i], store_.id[s.j]));
+    }
+  }
+  for (std::size_t c = 0; c < lists_.walls.size(); ++c) {
+    const WallSlot& s = lists_.walls[c];
+    const ContactMemory m = mem ? lists_.wall_memory[c] : ContactMemory{};
+    if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0 || m.active())
+      out.push_back({true, s.wall, store_.id[s.particle], s.overlap, s.shear, m});
+  }
+  // Broken bonds of pairs that left the lists stay broken.
+  std::sort(listed.begin(), listed.end());
+  for (std::uint64_t key : search_.broken_bonds()) {
+    if (std::binary_search(listed.begin(), listed.end(), key)) continue;
+    ContactState cs;
+    cs.i = std::uint32_t(key >> 32);
+    cs.j = ParticleId(key & 0xffffffffu);
+    cs.memory.state = ContactMemory::bond_broken;
+    out.push_back(cs);
+  }
   return out;
 }
 
 void DemSystem::import_contact_state(const std::vector<ContactState>& states)
 {
   std::vector<HistoryEntry> pairs, walls;
+  std::vector<MemoryEntry> pair_mem, wall_mem;
   for (const ContactState& c : states) {
     if (c.wall) {
       if (c.i >= walls_.size()) throw std::invalid_argument("import_contact_state: unknown wall");
       walls.push_back({wall_key(c.i, c.j), c.overlap, c.shear});
+      if (c.memory.active()) wall_mem.push_back({wall_key(c.i, c.j), c.memory});
     } else {
       if (c.i >= index_of_.size() || c.j >= index_of_.size())
         throw std::invalid_argument("import_contact_state: unknown particle id");
       // Stored as acting on the higher id: flip if given the other way round.
-      const Vec3 shear = c.i < c.j ? c.shear : Vec3(-c.shear);
+      const bool keep = c.i < c.j;
+      const Vec3 shear = keep ? c.shear : Vec3(-c.shear);
       pairs.push_back({pair_key(c.i, c.j), c.overlap, shear});
+      if (c.memory.active()) {
+        ContactMemory m = c.memory;
+        if (!keep) {
+          m.rolling = -m.rolling;
+          m.bond = -m.bond;
+        }
+        pair_mem.push_back({pair_key(c.i, c.j), m});
+      }
     }
   }
   search_.import_histories(std::move(pairs), std::move(walls));
+  search_.import_memory(std::move(pair_mem), std::move(wall_mem));
   rebuild_requested_ = true;
   invalidate();
 }
@@ -619,28 +731,53 @@ void DemSystem::import_contact_state(const std::vector<ContactState>& states)
 EnergyLedger DemSystem::energy() const
 {
   EnergyLedger e = losses_;
+  for (std::size_t c = 0; c < clumps_.size(); ++c) {
+    e.kinetic_translational += 0.5 * clumps_.mass[c] * clumps_.v[c].squaredNorm();
+    e.kinetic_rotational += clumps_.kinetic_energy(c) - 0.5 * clumps_.mass[c] * clumps_.v[c].squaredNorm();
+    e.gravitational -= clumps_.mass[c] * gravity_.dot(clumps_.x[c]);
+  }
   for (Index p = 0; p < store_.size(); ++p) {
-    if (store_.inv_mass[p] == 0.0) continue;
+    if (store_.inv_mass[p] == 0.0 || (store_.flags[p] & flag::member)) continue;
     e.kinetic_translational += 0.5 * store_.mass[p] * store_.v[p].squaredNorm();
     e.kinetic_rotational += 0.5 / store_.inv_inertia[p] * store_.omega[p].squaredNorm();
     e.gravitational -= store_.mass[p] * gravity_.dot(store_.x[p]);
   }
   std::visit(
     [&](const auto& law) {
-      for (const PairSlot& s : lists_.pairs) {
-        if (!(s.overlap > 0.0)) continue;
+      using L = std::decay_t<decltype(law)>;
+      const auto add = [&e](const ContactEnergy& c) {
+        e.elastic_normal += c.normal;
+        e.elastic_tangential += c.tangential;
+        e.elastic_rolling += c.rolling;
+        e.elastic_bonds += c.bond;
+      };
+      for (std::size_t c = 0; c < lists_.pairs.size(); ++c) {
+        const PairSlot& s = lists_.pairs[c];
         const double m_eff = 1.0 / (store_.inv_mass[s.i] + store_.inv_mass[s.j]);
         const double Ri = store_.radius[s.i], Rj = store_.radius[s.j];
-        const ContactEnergy c = law.elastic_energy(s.overlap, m_eff, Ri * Rj / (Ri + Rj), s.shear);
-        e.elastic_normal += c.normal;
-        e.elastic_tangential += c.tangential;
+        if constexpr (L::has_memory) {
+          ContactKinematics k;
+          k.overlap = s.overlap;
+          k.m_eff = m_eff;
+          k.r_eff = Ri * Rj / (Ri + Rj);
+          k.mu = mu_;
+          add(law.elastic_energy(k, s.shear, lists_.pair_memory[c]));
+        } else if (s.overlap > 0.0) {
+          add(law.elastic_energy(s.overlap, m_eff, Ri * Rj / (Ri + Rj), s.shear));
+        }
       }
-      for (const WallSlot& s : lists_.walls) {
-        if (!(s.overlap > 0.0)) continue;
-        const ContactEnergy c =
-          law.elastic_energy(s.overlap, store_.mass[s.particle], store_.radius[s.particle], s.shear);
-        e.elastic_normal += c.normal;
-        e.elastic_tangential += c.tangential;
+      for (std::size_t c = 0; c < lists_.walls.size(); ++c) {
+        const WallSlot& s = lists_.walls[c];
+        if constexpr (L::has_memory) {
+          ContactKinematics k;
+          k.overlap = s.overlap;
+          k.m_eff = store_.mass[s.particle];
+          k.r_eff = store_.radius[s.particle];
+          k.mu = walls_[s.wall].mu;
+          add(law.elastic_energy(k, s.shear, lists_.wall_memory[c]));
+        } else if (s.overlap > 0.0) {
+          add(law.elastic_energy(s.overlap, store_.mass[s.particle], store_.radius[s.particle], s.shear));
+        }
       }
     },
     model_);
@@ -652,11 +789,74 @@ EnergyLedger DemSystem::energy() const
 // Everything the next step reads is written, in storage order, as raw bytes (see
 // BinaryState.h): then a system read back computes the same bits as the original. The
 // law is a variant of trivially copyable parameter structs and is stored as its bytes.
+// Version 3 added the contact memory (rolling springs, bonds) and the clumps; version 2
+// states (restart files, exact specimens in core stores) are still read, through their
+// old layouts (LegacyState.h), and continue as they would have.
+
+namespace {
+constexpr std::uint32_t kStateVersion = 3;
+
+/// Reads the DEMSYSTM tag; returns its version (2 or 3).
+std::uint32_t read_state_version(std::istream& in)
+{
+  char tag[8];
+  in.read(tag, 8);
+  std::uint32_t version = 0;
+  if (in) binary::get(in, version);
+  if (!in || std::string(tag, 8) != "DEMSYSTM") throw binary::StateError("checkpoint: section 'DEMSYSTM' not found");
+  if (version != 2 && version != kStateVersion)
+    throw binary::StateError("checkpoint: section 'DEMSYSTM' has another version");
+  return version;
+}
+
+void write_clumps(std::ostream& out, const ClumpSet& c)
+{
+  binary::put_tag(out, "DEMCLUMP", 1);
+  binary::put_vector(out, c.x);
+  binary::put_vector(out, c.v);
+  binary::put_vector(out, c.L_body);
+  binary::put_vector(out, c.force);
+  binary::put_vector(out, c.torque);
+  binary::put_vector(out, c.q);
+  binary::put_vector(out, c.mass);
+  binary::put_vector(out, c.inv_mass);
+  binary::put_vector(out, c.inertia);
+  binary::put_vector(out, c.inv_inertia);
+  binary::put_vector(out, c.member_offset);
+  binary::put_vector(out, c.member_id);
+  binary::put_vector(out, c.member_body);
+}
+
+void read_clumps(std::istream& in, ClumpSet& c)
+{
+  binary::expect_tag(in, "DEMCLUMP", 1);
+  binary::get_vector(in, c.x);
+  binary::get_vector(in, c.v);
+  binary::get_vector(in, c.L_body);
+  binary::get_vector(in, c.force);
+  binary::get_vector(in, c.torque);
+  binary::get_vector(in, c.q);
+  binary::get_vector(in, c.mass);
+  binary::get_vector(in, c.inv_mass);
+  binary::get_vector(in, c.inertia);
+  binary::get_vector(in, c.inv_inertia);
+  binary::get_vector(in, c.member_offset);
+  binary::get_vector(in, c.member_id);
+  binary::get_vector(in, c.member_body);
+  const std::size_t n = c.x.size();
+  for (std::size_t a : {c.v.size(), c.L_body.size(), c.force.size(), c.torque.size(), c.q.size(), c.mass.size(),
+                        c.inv_mass.size(), c.inertia.size(), c.inv_inertia.size()})
+    if (a != n) throw binary::StateError("checkpoint: clump arrays of different lengths");
+  if (c.member_offset.size() != n + 1 || c.member_id.size() != c.member_body.size() ||
+      c.member_offset.back() != c.member_id.size())
+    throw binary::StateError("checkpoint: inconsistent clump members");
+}
+}  // namespace
 
 void DemSystem::write_state(std::ostream& out) const
 {
   static_assert(std::is_trivially_copyable_v<ContactModel>, "ContactModel is stored as its bytes");
-  binary::put_tag(out, "DEMSYSTM", 2);
+  binary::put_tag(out, "DEMSYSTM", kStateVersion);
   binary::put<std::uint64_t>(out, sizeof(ContactModel));
   binary::put(out, model_);
   const ParticleStore& p = store_;
@@ -682,6 +882,11 @@ void DemSystem::write_state(std::ostream& out) const
   binary::put_vector(out, lists_.incident);
   binary::put_vector(out, lists_.walls);
   binary::put_vector(out, lists_.wall_offset);
+  binary::put(out, lists_.with_memory);
+  binary::put_vector(out, lists_.pair_memory);
+  binary::put_vector(out, lists_.wall_memory);
+  binary::put(out, wall_bonding_);
+  write_clumps(out, clumps_);
   binary::put(out, dt_);
   binary::put(out, threads_);
   binary::put(out, gravity_);
@@ -701,11 +906,18 @@ void DemSystem::write_state(std::ostream& out) const
 
 void DemSystem::read_state(std::istream& in)
 {
-  binary::expect_tag(in, "DEMSYSTM", 2);
+  const std::uint32_t version = read_state_version(in);
   std::uint64_t model_size = 0;
   binary::get(in, model_size);
-  if (model_size != sizeof(ContactModel)) throw binary::StateError("checkpoint: contact law written by another build");
-  binary::get(in, model_);
+  if (version == 2) {
+    legacy::ContactModelV2 old;
+    if (model_size != sizeof(old)) throw binary::StateError("checkpoint: contact law written by another build");
+    binary::get(in, old);
+    model_ = legacy::convert(old);
+  } else {
+    if (model_size != sizeof(ContactModel)) throw binary::StateError("checkpoint: contact law written by another build");
+    binary::get(in, model_);
+  }
   ParticleStore& p = store_;
   binary::get_vector(in, p.x);
   binary::get_vector(in, p.v);
@@ -734,6 +946,22 @@ void DemSystem::read_state(std::istream& in)
   binary::get_vector(in, lists_.incident);
   binary::get_vector(in, lists_.walls);
   binary::get_vector(in, lists_.wall_offset);
+  if (version >= 3) {
+    binary::get(in, lists_.with_memory);
+    binary::get_vector(in, lists_.pair_memory);
+    binary::get_vector(in, lists_.wall_memory);
+    if (lists_.with_memory &&
+        (lists_.pair_memory.size() != lists_.pairs.size() || lists_.wall_memory.size() != lists_.walls.size()))
+      throw binary::StateError("checkpoint: contact memory does not match the contact lists");
+    binary::get(in, wall_bonding_);
+    read_clumps(in, clumps_);
+  } else {  // version 2: plain laws, no clumps
+    lists_.with_memory = false;
+    lists_.pair_memory.clear();
+    lists_.wall_memory.clear();
+    wall_bonding_ = false;
+    clumps_ = ClumpSet{};
+  }
   binary::get(in, dt_);
   binary::get(in, threads_);
   binary::get(in, gravity_);
@@ -746,7 +974,13 @@ void DemSystem::read_state(std::istream& in)
   binary::get(in, moved2_);
   binary::get(in, time_);
   binary::get(in, steps_);
-  binary::get(in, losses_);
+  if (version >= 3) {
+    binary::get(in, losses_);
+  } else {
+    legacy::EnergyLedgerV2 old;
+    binary::get(in, old);
+    losses_ = legacy::convert(old);
+  }
   binary::get_vector(in, wall_force_old_);
   block_losses_.clear();
 }
@@ -755,7 +989,8 @@ std::size_t DemSystem::memory_bytes() const
 {
   return store_.memory_bytes() + index_of_.capacity() * sizeof(Index) + lists_.memory_bytes() +
          search_.memory_bytes() + block_losses_.capacity() * sizeof(double) +
-         (walls_.capacity() * sizeof(PlaneWall)) + wall_force_old_.capacity() * sizeof(Vec3);
+         (walls_.capacity() * sizeof(PlaneWall)) + wall_force_old_.capacity() * sizeof(Vec3) +
+         clumps_.memory_bytes();
 }
 
 }  // namespace geocomp::dem

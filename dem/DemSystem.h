@@ -26,9 +26,16 @@
 // Contacts: `contacts()` lists touching contacts with ids, normal, overlap, forces,
 // branch vector and contact point (for Love-Weber stress, fabric, coordination);
 // `export_contact_state()` / `import_contact_state()` save and restore all tangential
-// histories, keyed by stable ids, for checkpoints.
+// histories and contact memories (rolling springs, bonds), keyed by stable ids, for
+// checkpoints.
+//
+// Clumps (ClumpSet.h): `add_clump()` adds a rigid cluster of spheres whose mass, centre
+// of mass and principal inertia come from voxel integration; its members are spheres in
+// the store (flag::member) that the clump moves rigidly, and contacts are generated only
+// between members of different clumps (and with free spheres and walls).
 #pragma once
 
+#include "dem/ClumpSet.h"
 #include "dem/ContactLaw.h"
 #include "dem/ContactLists.h"
 #include "dem/EnergyLedger.h"
@@ -65,6 +72,7 @@ struct ContactState
   ParticleId j = 0;
   double overlap = 0.0;
   Vec3 shear = Vec3::Zero();
+  ContactMemory memory{};  ///< rolling spring and bonds (laws with memory; else empty)
 };
 
 class DemSystem
@@ -104,6 +112,18 @@ public:
   /// counts the largest increase of the batch once).
   void set_radii(const std::vector<double>& radii);
 
+  // --- clumps
+  /// Adds a rigid clump of the spheres `members` (world positions) with density rho;
+  /// mass properties by voxel integration with cube side `voxel` (0: S4's D_min/20).
+  /// Returns the clump index; member particle ids are clump_members(index).
+  std::size_t add_clump(const std::vector<ClumpMember>& members, double density, const Vec3& v = Vec3::Zero(),
+                        const Vec3& omega = Vec3::Zero(), double voxel = 0.0);
+  std::size_t n_clumps() const { return clumps_.size(); }
+  const ClumpSet& clumps() const { return clumps_; }
+  std::vector<ParticleId> clump_members(std::size_t c) const;
+  void set_clump_velocity(std::size_t c, const Vec3& v);
+  void set_clump_angular_velocity(std::size_t c, const Vec3& omega);
+
   // --- walls
   std::size_t add_wall(const PlaneWall& w);
   /// Six faces of the box [lo, hi] with friction mu_p; returns the index of the first
@@ -119,6 +139,8 @@ public:
   // --- contact law
   void set_contact_model(const ContactModel& m);
   const ContactModel& contact_model() const { return model_; }
+  /// Whether bonds and adhesion (cohesion parts) form with walls too (default false).
+  void set_wall_bonding(bool on) { wall_bonding_ = on; invalidate(); }
   /// Particle-particle Coulomb coefficient mu_s.
   void set_friction(double mu);
   double friction() const { return mu_; }
@@ -190,12 +212,20 @@ private:
   double kick_drift(double dt);
   double drift_overdamped(double dt);
   void refresh_index();
+  bool law_has_memory() const;
+  double law_reach() const;
+  double kick_drift_clumps(double dt);
+  void kick_clumps(double dt);
+  void place_members(std::size_t c, bool positions);
+  void gather_clump_loads();
 
   ParticleStore store_;
   std::vector<Index> index_of_;
   std::vector<PlaneWall> walls_;
   ContactModel model_;
   double mu_ = 0.0;
+  bool wall_bonding_ = false;
+  ClumpSet clumps_;
   NeighbourSearch search_;
   ContactLists lists_;
 

@@ -5,7 +5,9 @@
 // initial energy plus the work the walls did,
 // $$ E_{kin} + E_{el} + E_{grav} + D_{damp} + D_{fric} + D_{local} = E_0 + W_{walls}. $$
 // Kinetic energy is $\sum\tfrac12 m v^2 + \tfrac12 I\omega^2$ (on-step velocities), elastic
-// is the normal and tangential springs of all touching contacts, $E_{grav} = -\sum m g\cdot x$.
+// is the normal and tangential springs of all touching contacts (plus rolling springs
+// and S3 bonds when the law has them), $E_{grav} = -\sum m g\cdot x$; clumps count as rigid
+// bodies, $\tfrac12 Mv_G^2 + \tfrac12 L_b\cdot I^{-1}L_b$.
 // Dissipation is accumulated per step only while energy tracking is on.
 #pragma once
 
@@ -21,12 +23,15 @@ struct EnergyLedger
   double dissipated_damping = 0.0;   ///< contact dashpots (normal + tangential)
   double dissipated_friction = 0.0;  ///< Coulomb sliding
   double dissipated_local = 0.0;     ///< Cundall local damping
+  double dissipated_bonds = 0.0;     ///< bond breakage and adhesion formation (S3)
+  double elastic_rolling = 0.0;      ///< rolling springs (S2)
+  double elastic_bonds = 0.0;        ///< S3 bond springs + adhesion potential (may be < 0)
   double wall_work = 0.0;            ///< work done by the walls on the particles
 
   double kinetic() const { return kinetic_translational + kinetic_rotational; }
-  double elastic() const { return elastic_normal + elastic_tangential; }
+  double elastic() const { return elastic_normal + elastic_tangential + elastic_rolling + elastic_bonds; }
   double mechanical() const { return kinetic() + elastic() + gravitational; }
-  double dissipated() const { return dissipated_damping + dissipated_friction + dissipated_local; }
+  double dissipated() const { return dissipated_damping + dissipated_friction + dissipated_local + dissipated_bonds; }
   /// Conserved quantity: mechanical + dissipated - wall work.
   double balance() const { return mechanical() + dissipated() - wall_work; }
 };

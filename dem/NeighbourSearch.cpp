@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <string>
 #include <stdexcept>
 
 namespace geocomp::dem {
@@ -15,7 +17,68 @@ const HistoryEntry* find_history(const std::vector<HistoryEntry>& archive, std::
                              [](const HistoryEntry& e, std::uint64_t k) { return e.key < k; });
   return (it != archive.end() && it->key == key) ? &*it : nullptr;
 }
+
+/// Memory of `key`: the archived one, or a broken bond's mark, or empty.
+ContactMemory find_memory(const std::vector<MemoryEntry>& archive, const std::vector<std::uint64_t>& broken,
+                          std::uint64_t key)
+{
+  auto it = std::lower_bound(archive.begin(), archive.end(), key,
+                             [](const MemoryEntry& e, std::uint64_t k) { return e.key < k; });
+  if (it != archive.end() && it->key == key) return it->memory;
+  ContactMemory m;
+  if (std::binary_search(broken.begin(), broken.end(), key)) m.state = ContactMemory::bond_broken;
+  return m;
+}
+
+/// Adds the keys of broken bonds among `entries` to the sorted set `broken`.
+void merge_broken(std::vector<std::uint64_t>& broken, const std::vector<MemoryEntry>& entries)
+{
+  std::vector<std::uint64_t> add;
+  for (const MemoryEntry& e : entries)
+    if (e.memory.has(ContactMemory::bond_broken)) add.push_back(e.key);
+  if (add.empty()) return;
+  std::vector<std::uint64_t> merged;
+  merged.reserve(broken.size() + add.size());
+  std::set_union(broken.begin(), broken.end(), add.begin(), add.end(), std::back_inserter(merged));
+  broken.swap(merged);
+}
 }  // namespace
+
+void NeighbourSearch::set_reach(double r)
+{
+  if (!(r >= 0.0)) throw std::invalid_argument("NeighbourSearch: reach must be >= 0");
+  reach_ = r;
+}
+
+void NeighbourSearch::import_memory(std::vector<MemoryEntry> pairs, std::vector<MemoryEntry> walls)
+{
+  pair_memory_archive_ = std::move(pairs);
+  wall_memory_archive_ = std::move(walls);
+  std::sort(pair_memory_archive_.begin(), pair_memory_archive_.end());
+  std::sort(wall_memory_archive_.begin(), wall_memory_archive_.end());
+  merge_broken(broken_pairs_, pair_memory_archive_);
+  merge_broken(broken_walls_, wall_memory_archive_);
+  memory_imported_ = true;
+}
+
+void NeighbourSearch::archive_memory(const ParticleStore& store, const ContactLists& lists)
+{
+  pair_memory_archive_.clear();
+  wall_memory_archive_.clear();
+  if (!lists.with_memory) return;
+  for (std::size_t c = 0; c < lists.pair_memory.size(); ++c)
+    if (lists.pair_memory[c].active())
+      pair_memory_archive_.push_back(
+        {pair_key(store.id[lists.pairs[c].i], store.id[lists.pairs[c].j]), lists.pair_memory[c]});
+  for (std::size_t c = 0; c < lists.wall_memory.size(); ++c)
+    if (lists.wall_memory[c].active())
+      wall_memory_archive_.push_back(
+        {wall_key(lists.walls[c].wall, store.id[lists.walls[c].particle]), lists.wall_memory[c]});
+  std::sort(pair_memory_archive_.begin(), pair_memory_archive_.end());
+  std::sort(wall_memory_archive_.begin(), wall_memory_archive_.end());
+  merge_broken(broken_pairs_, pair_memory_archive_);
+  merge_broken(broken_walls_, wall_memory_archive_);
+}
 
 void NeighbourSearch::set_skin(double s)
 {
@@ -67,11 +130,14 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   // (1) Histories by stable key, before any index changes.
   if (!imported_) archive(store, lists);
   imported_ = false;
+  if (!memory_imported_) archive_memory(store, lists);
+  memory_imported_ = false;
+  const bool memory = lists.with_memory;
 
   const std::size_t n = store.size();
   double r_max = 0.0;
   for (double r : store.radius) r_max = std::max(r_max, r);
-  grid_.build(store.x, 2.0 * r_max + skin_);
+  grid_.build(store.x, 2.0 * r_max + reach_ + skin_);
 
   // (2) Spatial sorting.
   bool permuted = false;
@@ -95,7 +161,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
     if (b <= a) return false;
     if (body[a] != kOwnBody && body[a] == body[b]) return false;
     if (inv_m[a] == 0.0 && inv_m[b] == 0.0) return false;
-    const double range = R[a] + R[b] + skin_;
+    const double range = R[a] + R[b] + reach_ + skin_;
     return (x[b] - x[a]).squaredNorm() < range * range;
   };
   count_.assign(n + 1, 0);
@@ -109,6 +175,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   const std::size_t n_pairs = count_[n];
   if (lists.pairs.capacity() < n_pairs) lists.pairs.reserve(n_pairs + n_pairs / 8);
   lists.pairs.resize(n_pairs);
+  lists.pair_memory.resize(memory ? n_pairs : 0);
   const auto& id = store.id;
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t a = 0; a < std::int64_t(n); ++a) {
@@ -125,6 +192,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
       s.shear = h ? h->shear : Vec3::Zero();
       s.force.setZero();
       s.lever.setZero();
+      if (memory) lists.pair_memory[k - 1] = find_memory(pair_memory_archive_, broken_pairs_, pair_key(id[a], id[b]));
     });
   }
 
@@ -146,11 +214,12 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
 
   // Wall candidates, sorted by particle.
   lists.walls.clear();
+  lists.wall_memory.clear();
   lists.wall_offset.assign(n + 1, 0);
   for (std::size_t p = 0; p < n; ++p) {
     if (inv_m[p] != 0.0) {
       for (std::size_t w = 0; w < walls.size(); ++w) {
-        if (walls[w].distance(x[p]) < R[p] + skin_) {
+        if (walls[w].distance(x[p]) < R[p] + reach_ + skin_) {
           WallSlot s;
           s.wall = Index(w);
           s.particle = Index(p);
@@ -160,6 +229,9 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
             s.shear = h->shear;
           }
           lists.walls.push_back(s);
+          if (memory)
+            lists.wall_memory.push_back(
+              find_memory(wall_memory_archive_, broken_walls_, wall_key(std::uint32_t(w), id[p])));
         }
       }
     }
@@ -179,12 +251,14 @@ std::size_t NeighbourSearch::memory_bytes() const
 {
   return grid_.memory_bytes() + (x_ref_.capacity() + wall_ref_.capacity()) * sizeof(Vec3) +
          count_.capacity() * sizeof(std::uint32_t) +
-         (pair_archive_.capacity() + wall_archive_.capacity()) * sizeof(HistoryEntry);
+         (pair_archive_.capacity() + wall_archive_.capacity()) * sizeof(HistoryEntry) +
+         (pair_memory_archive_.capacity() + wall_memory_archive_.capacity()) * sizeof(MemoryEntry) +
+         (broken_pairs_.capacity() + broken_walls_.capacity()) * sizeof(std::uint64_t);
 }
 
 void NeighbourSearch::write_state(std::ostream& out) const
 {
-  binary::put_tag(out, "NBSEARCH", 1);
+  binary::put_tag(out, "NBSEARCH", 2);
   binary::put(out, skin_);
   binary::put(out, sort_);
   binary::put(out, imported_);
@@ -193,11 +267,23 @@ void NeighbourSearch::write_state(std::ostream& out) const
   binary::put_vector(out, wall_ref_);
   binary::put_vector(out, pair_archive_);
   binary::put_vector(out, wall_archive_);
+  binary::put(out, reach_);
+  binary::put(out, memory_imported_);
+  binary::put_vector(out, pair_memory_archive_);
+  binary::put_vector(out, wall_memory_archive_);
+  binary::put_vector(out, broken_pairs_);
+  binary::put_vector(out, broken_walls_);
 }
 
 void NeighbourSearch::read_state(std::istream& in)
 {
-  binary::expect_tag(in, "NBSEARCH", 1);
+  // Version 1 (before contact memory): no reach, memory archives or broken bonds.
+  char tag[8];
+  in.read(tag, 8);
+  std::uint32_t version = 0;
+  if (in) binary::get(in, version);
+  if (!in || std::string(tag, 8) != "NBSEARCH" || (version != 1 && version != 2))
+    throw binary::StateError("checkpoint: section 'NBSEARCH' not found or of another version");
   binary::get(in, skin_);
   binary::get(in, sort_);
   binary::get(in, imported_);
@@ -208,6 +294,21 @@ void NeighbourSearch::read_state(std::istream& in)
   binary::get_vector(in, wall_ref_);
   binary::get_vector(in, pair_archive_);
   binary::get_vector(in, wall_archive_);
+  if (version == 1) {
+    reach_ = 0.0;
+    memory_imported_ = false;
+    pair_memory_archive_.clear();
+    wall_memory_archive_.clear();
+    broken_pairs_.clear();
+    broken_walls_.clear();
+    return;
+  }
+  binary::get(in, reach_);
+  binary::get(in, memory_imported_);
+  binary::get_vector(in, pair_memory_archive_);
+  binary::get_vector(in, wall_memory_archive_);
+  binary::get_vector(in, broken_pairs_);
+  binary::get_vector(in, broken_walls_);
 }
 
 }  // namespace geocomp::dem

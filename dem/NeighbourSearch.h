@@ -12,10 +12,16 @@
 // binary search on its key, and (5) builds the gather index. Everything is
 // deterministic and independent of the thread count. Pairs inside one rigid body and
 // pairs of two kinematic particles are never listed.
+//
+// Laws with memory (rolling, bonds: ContactMemory.h) have their per-slot memory carried
+// the same way. Their interactions may outlive the overlap up to a gap `reach`, so the
+// list range becomes $R_i + R_j + reach + s$. The keys of broken bonds are kept for good
+// (a broken bond never forms again, S3), even after the pair has left the lists.
 #pragma once
 
 #include "dem/CellGrid.h"
 #include "dem/ContactLists.h"
+#include "dem/ContactMemory.h"
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
 
@@ -30,6 +36,9 @@ public:
   void set_skin(double s);
   double skin() const { return skin_; }
   void set_spatial_sorting(bool on) { sort_ = on; }
+  /// Largest gap at which a listed contact can still carry force (0 for the plain laws).
+  void set_reach(double r);
+  double reach() const { return reach_; }
 
   /// True when the lists may miss a contact, given the largest squared particle
   /// displacement since the build.
@@ -44,6 +53,10 @@ public:
 
   /// Replaces the histories to be carried by the next rebuild (checkpoint import).
   void import_histories(std::vector<HistoryEntry> pairs, std::vector<HistoryEntry> walls);
+  /// The same for the contact memory of laws with rolling or cohesion parts.
+  void import_memory(std::vector<MemoryEntry> pairs, std::vector<MemoryEntry> walls);
+  /// Keys of broken pair bonds, sorted (they stay broken for the rest of the run).
+  const std::vector<std::uint64_t>& broken_bonds() const { return broken_pairs_; }
 
   std::size_t n_builds() const { return n_builds_; }
   std::size_t memory_bytes() const;
@@ -54,6 +67,7 @@ public:
 
 private:
   void archive(const ParticleStore& store, const ContactLists& lists);
+  void archive_memory(const ParticleStore& store, const ContactLists& lists);
 
   double skin_ = 0.0;
   bool sort_ = true;
@@ -64,6 +78,10 @@ private:
   std::vector<Vec3> wall_ref_;
   std::vector<std::uint32_t> count_;
   std::vector<HistoryEntry> pair_archive_, wall_archive_;
+  double reach_ = 0.0;
+  bool memory_imported_ = false;
+  std::vector<MemoryEntry> pair_memory_archive_, wall_memory_archive_;
+  std::vector<std::uint64_t> broken_pairs_, broken_walls_;
 };
 
 }  // namespace geocomp::dem

@@ -5,14 +5,15 @@
 // arrays: one contiguous array per attribute. The arrays are public members on
 // purpose, like a LAMMPS atom vector; the invariants are that all arrays have the same
 // length and that `inv_mass`/`inv_inertia` agree with `mass`/`radius` unless the
-// particle is kinematic (flag::fixed, inverse values zero).
+// particle is kinematic (flag::fixed, inverse values zero) or a clump member
+// (flag::member: inverse mass of the whole clump, zero inverse inertia; ClumpSet.h).
 //
 // Spheres: inertia $I = \tfrac25 m R^2$. The orientation quaternion is integrated from
 // $\omega$ (world frame) by the integrator, $q \leftarrow \exp(\Delta t\,\omega/2)\otimes q$.
 //
-// Seams for later issues (not used by spheres yet, but honoured by the core):
-//  - `body`: index of the rigid body a sphere belongs to (kOwnBody for a free sphere).
-//    The neighbour search never pairs two spheres of the same body.
+// Seams (honoured by the core):
+//  - `body`: index of the rigid body (clump) a sphere belongs to (kOwnBody for a free
+//    sphere). The neighbour search never pairs two spheres of the same body.
 //  - `id`: stable ids, so a broken sphere can be replaced by children with new ids
 //    while the contact histories of the others stay keyed correctly.
 //  - `permute()`: the storage order is not an identity; only ids are.

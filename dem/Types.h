@@ -25,8 +25,8 @@ using ParticleId = std::uint32_t;
 /// Position of a particle in the current storage order (changes on spatial sorting).
 using Index = std::uint32_t;
 
-/// `body` value of a sphere that is its own rigid body. A clump (later) gives all its
-/// member spheres the clump's body index; contacts inside one body are never generated.
+/// `body` value of a sphere that is its own rigid body. A clump gives all its member
+/// spheres the clump's body index; contacts inside one body are never generated.
 inline constexpr std::int32_t kOwnBody = -1;
 
 /// Per-particle flag bits.
@@ -34,6 +34,9 @@ namespace flag {
 /// Kinematic: the integrator does not change v and omega (inverse mass and inertia are
 /// zero); the particle still moves with its prescribed velocity.
 inline constexpr std::uint32_t fixed = 1u << 0;
+/// Member sphere of a clump (ClumpSet.h): moved rigidly with its clump, not integrated
+/// on its own; its `body` is the clump index.
+inline constexpr std::uint32_t member = 1u << 1;
 }  // namespace flag
 
 /// Canonical history key of a particle pair: (id_lo << 32) | id_hi (DEM-NOTES section 5).

@@ -32,6 +32,8 @@ void declare_all(ParameterHandler &prm, unsigned int stages)
   declare_top(prm);
   sections::declare_specimen(prm);
   sections::declare_contact(prm);
+  sections::declare_contact_parts(prm);
+  sections::declare_clumps(prm);
   sections::declare_dem(prm);
   sections::declare_continuum(prm);
   sections::declare_program(prm, stages);
@@ -216,6 +218,8 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
       reader.fail("engines", "expected at least one of dem, continuum, material-point");
     c.specimen = sections::parse_specimen(prm, reader);
     c.contact = sections::parse_contact(prm, reader);
+    sections::parse_contact_parts(prm, reader, c.contact);
+    c.clumps = sections::parse_clumps(prm, reader);
     c.dem = sections::parse_dem(prm, reader);
     c.continuum = sections::parse_continuum(prm, reader);
     c.program = sections::parse_program(prm, stages, reader);

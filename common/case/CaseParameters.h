@@ -52,6 +52,28 @@ struct ContactParameters {
   double tangential_stiffness_ratio = 2.0 / 7.0; ///< k_t / k_n
   double particle_friction = 0.4;       ///< mu_s
   double wall_friction = 0.0;           ///< mu_p
+  // Optional contact parts (ContactPartsSection.cpp).
+  std::string tangential_model = "coulomb"; ///< coulomb | s3-stick-slip (S3 eq. (9))
+  double slip_displacement = 1e-4;      ///< [m] S3 delta*_tau
+  double slip_retention = 1.0;          ///< S3 k_phi
+  double rolling_friction = 0.0;        ///< mu_r (S2); 0 = none
+  double rolling_stiffness_ratio = 1.0; ///< k_r / (k_t R*^2)
+  double cohesion = 0.0;                ///< [Pa] S3 C_c; 0 = no bonds
+  double cohesion_modulus = 1e6;        ///< [Pa] S3 E_c
+  double adhesion = 0.0;                ///< [Pa] S3 C_a; 0 = none
+  double adhesion_modulus = 1e6;        ///< [Pa] S3 E_a
+  bool wall_bonding = false;            ///< bonds and adhesion with walls too
+};
+
+/// Rigid clumps of spheres (S3, S4), section `clumps`.
+struct ClumpParameters {
+  std::string shape = "spheres";        ///< spheres | s4-clumps
+  double log_mass_mean = -0.117;        ///< S4: mu of ln(m / 1 g)
+  double log_mass_sigma = 0.432;        ///< S4: sigma of ln(m / 1 g)
+  double mass_min = 0.4e-3;             ///< [kg]
+  double mass_max = 2.0e-3;             ///< [kg]
+  double max_overlap = 0.5;             ///< overlaps in [0, max_overlap D_min]
+  double voxel_fraction = 0.05;         ///< voxel side / D_min (S4: 1/20)
 };
 
 struct DemParameters {
@@ -134,6 +156,7 @@ struct CaseDescription {
   unsigned long long seed = 1;
   SpecimenParameters specimen;
   ContactParameters contact;
+  ClumpParameters clumps;
   DemParameters dem;
   ContinuumParameters continuum;
   LoadingProgram program;

@@ -19,6 +19,11 @@ void declare_specimen(dealii::ParameterHandler &prm);
 SpecimenParameters parse_specimen(dealii::ParameterHandler &prm, const Reader &r);
 void declare_contact(dealii::ParameterHandler &prm);
 ContactParameters parse_contact(dealii::ParameterHandler &prm, const Reader &r);
+/// Rolling, bonds, S3 friction: further entries of `contact` (ContactPartsSection.cpp).
+void declare_contact_parts(dealii::ParameterHandler &prm);
+void parse_contact_parts(dealii::ParameterHandler &prm, const Reader &r, ContactParameters &p);
+void declare_clumps(dealii::ParameterHandler &prm);
+ClumpParameters parse_clumps(dealii::ParameterHandler &prm, const Reader &r);
 void declare_dem(dealii::ParameterHandler &prm);
 DemParameters parse_dem(dealii::ParameterHandler &prm, const Reader &r);
 void declare_continuum(dealii::ParameterHandler &prm);

@@ -2,6 +2,7 @@
 
 #include "common/AtomicFile.h"
 #include "common/BinaryState.h"
+#include "dem/program/ContactParts.h"
 
 #include <algorithm>
 #include <atomic>
@@ -15,7 +16,8 @@ namespace geocomp::dem {
 
 // @sect4{Contact law and system from the case file}
 
-ContactModel make_contact_model(const ContactParameters &c)
+namespace {
+ContactModel make_base_contact_model(const ContactParameters &c)
 {
   if (c.model == "hertz-mindlin") {
     HertzNormal::Parameters n; // S4 eq. (15), (18); damping from e (DEM-NOTES section 3)
@@ -53,6 +55,12 @@ ContactModel make_contact_model(const ContactParameters &c)
   const double r = c.tangential_stiffness_ratio;
   return LinearSpringDashpot(LinearNormal(n), LinearTangential::with_ratio(r, r));
 }
+} // namespace
+
+ContactModel make_contact_model(const ContactParameters &c)
+{
+  return with_contact_parts(make_base_contact_model(c), c); // rolling, bonds, S3 friction
+}
 
 DemSystem make_system(const Packing &packing, const ContactParameters &c, const DemParameters &d)
 {
@@ -69,6 +77,7 @@ DemSystem make_system(const Packing &packing, const ContactParameters &c, const 
   d_mean /= double(packing.size());
   system.set_contact_model(make_contact_model(c));
   system.set_friction(c.particle_friction);
+  system.set_wall_bonding(c.wall_bonding);
   system.set_skin(d.skin * d_mean);
   if (d.threads > 0)
     system.set_num_threads(int(d.threads));

@@ -1,0 +1,57 @@
+// @sect3{Reading DemSystem states written before contact memory and clumps (version 2)}
+//
+// Why it exists: DemSystem states are stored for restarts and inside the HDF5 core
+// store (exact specimens, e.g. cases/store/small.h5). Version 3 of the state added the
+// contact memory, the clumps and three ledger entries, and the law variant gained
+// alternatives, so version 2 bytes no longer match the current structs. These are the
+// version 2 layouts, member for member, so an old state is read and converted instead
+// of being refused: the old law alternatives were `ContactLaw<Normal, Tangential>` with
+// exactly two members, and the old ledger had nine doubles in this order.
+#pragma once
+
+#include "dem/ContactLaw.h"
+#include "dem/EnergyLedger.h"
+
+#include <stdexcept>
+#include <variant>
+
+namespace geocomp::dem::legacy {
+
+template <class Normal, class Tangential>
+struct LawV2
+{
+  Normal normal;
+  Tangential tangential;
+};
+
+using ContactModelV2 = std::variant<LawV2<LinearNormal, LinearTangential>, LawV2<HertzNormal, MindlinTangential>>;
+
+inline ContactModel convert(const ContactModelV2& m)
+{
+  if (const auto* l = std::get_if<0>(&m)) return LinearSpringDashpot(l->normal, l->tangential);
+  if (const auto* h = std::get_if<1>(&m)) return HertzMindlin(h->normal, h->tangential);
+  throw std::runtime_error("legacy DEM state: empty contact law");
+}
+
+struct EnergyLedgerV2
+{
+  double kinetic_translational, kinetic_rotational, elastic_normal, elastic_tangential, gravitational,
+    dissipated_damping, dissipated_friction, dissipated_local, wall_work;
+};
+
+inline EnergyLedger convert(const EnergyLedgerV2& o)
+{
+  EnergyLedger e;
+  e.kinetic_translational = o.kinetic_translational;
+  e.kinetic_rotational = o.kinetic_rotational;
+  e.elastic_normal = o.elastic_normal;
+  e.elastic_tangential = o.elastic_tangential;
+  e.gravitational = o.gravitational;
+  e.dissipated_damping = o.dissipated_damping;
+  e.dissipated_friction = o.dissipated_friction;
+  e.dissipated_local = o.dissipated_local;
+  e.wall_work = o.wall_work;
+  return e;
+}
+
+}  // namespace geocomp::dem::legacy
