@@ -103,6 +103,7 @@ struct ContinuumParameters {
   HardeningTable dilatancy_angle;       ///< [deg]
   unsigned int cells_per_edge = 4;
   unsigned int degree = 1;
+  std::string volumetric_integration = "full"; ///< full | b-bar
   double imperfection_radius = 0.0;     ///< [m]; 0 = none
   double imperfection_factor = 0.9;     ///< cohesion multiplier inside it
   std::vector<double> imperfection_centre{0.5, 0.5, 0.5}; ///< relative to L0

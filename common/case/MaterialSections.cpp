@@ -105,6 +105,10 @@ void declare_continuum(dealii::ParameterHandler &prm)
                     "Dilatancy angle psi(kappa) [deg], same format; psi <= phi (non-associated flow).");
   prm.declare_entry("cells per edge", "4", Integer(1, 512), "Hexahedra per cube edge.");
   prm.declare_entry("degree", "1", Integer(1, 4), "Polynomial degree of the FE_Q displacement.");
+  prm.declare_entry("volumetric integration", "full", Selection("full|b-bar"),
+                    "full: every quadrature point takes its own volumetric strain; b-bar: the cell average "
+                    "(Hughes 1980), which removes the volumetric locking of Q1 under nearly isochoric plastic "
+                    "flow (docs/continuum-fe.md). Meant for degree 1.");
   prm.declare_entry("imperfection radius", "0", Double(0, 1e3),
                     "Radius [m] of a weaker zone that triggers a band; 0 = none.");
   prm.declare_entry("imperfection factor", "0.9", Double(0.01, 1.0), "Cohesion multiplier inside the weaker zone.");
@@ -178,6 +182,7 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   p.dilatancy_angle = parse_table(prm.get("dilatancy angle"), "continuum/dilatancy angle", r);
   p.cells_per_edge = prm.get_integer("cells per edge");
   p.degree = prm.get_integer("degree");
+  p.volumetric_integration = prm.get("volumetric integration");
   p.imperfection_radius = prm.get_double("imperfection radius");
   p.imperfection_factor = prm.get_double("imperfection factor");
   p.imperfection_centre = dealii::Utilities::string_to_double(

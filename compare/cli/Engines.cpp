@@ -127,6 +127,7 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
     for (int a = 0; a < 3; ++a)
       p.imperfection_centre[a] = c.continuum.imperfection_centre[a] * p.side;
     p.regularization = c.continuum.regularization;
+    p.volumetric_integration = c.continuum.volumetric_integration;
     p.linear_solver = c.continuum.linear_solver;
     p.preconditioner = c.continuum.preconditioner;
     p.newton_tolerance = c.continuum.newton_tolerance;

@@ -2,6 +2,7 @@
 // measurement, save/restore. The model and the method are described in CubeEngine.h;
 // the choices (walls, reactions, crack band) and measured behaviour in docs/continuum-fe.md.
 #include "continuum/fe/CubeEngineImpl.h"
+#include "continuum/models/Mandel.h"
 
 
 #include <deal.II/base/function.h>
@@ -73,6 +74,8 @@ void check_parameters(const CubeParameters &p)
     fail("imperfection cohesion factor", "must be in (0, 1]");
   if (p.regularization != "crack-band" && p.regularization != "none")
     fail("regularization", "must be crack-band or none");
+  if (p.volumetric_integration != "full" && p.volumetric_integration != "b-bar")
+    fail("volumetric integration", "must be full or b-bar");
   if (!(p.band_reference_width >= 0.0))
     fail("band reference width", "must be >= 0");
   if (p.localization_directions < 10)
@@ -231,6 +234,14 @@ double CubeEngine::Impl::target_stress(int axis, double t) const
 // B_i : C : B_j = b_i . (C_M b_j). The residual is condensed with the homogeneous wall
 // constraints (constrained rows vanish); the unconstrained internal force is kept for the
 // wall reactions.
+//
+// B-bar (Hughes 1980, `volumetric integration = b-bar`): the volumetric part of the strain
+// and of every b_i is replaced by its cell average,
+//     eps_bar = eps + (1/3)(<tr eps> - tr eps) I,   b_bar_i = b_i + (1/3)(<div N_i> - div N_i) m,
+// with <.> = int_cell (.) dV / V_cell and m the Mandel identity. Homogeneous fields are
+// unchanged; for Q1 the volumetric constraints drop from 8 to 1 per cell, so nearly
+// isochoric plastic flow no longer locks. K_ij = int b_bar_i . C b_bar_j stays the exact
+// derivative of the B-bar residual.
 double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
 {
   Timer timer;
@@ -244,6 +255,9 @@ double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
   std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
   std::vector<SymmetricTensor<2, 3>> strains(n_q);
   std::vector<Vector6> b(dofs_per_cell), Cb(dofs_per_cell);
+  const bool bbar = prm.volumetric_integration == "b-bar";
+  const Vector6 m = mandel_identity();
+  std::vector<double> mean_div(bbar ? dofs_per_cell : 0);
 
   if (with_matrix)
     matrix = 0.0;
@@ -259,6 +273,22 @@ double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
     fe_values.reinit(cell);
     cell->get_dof_indices(dof_indices);
     fe_values[displacement].get_function_symmetric_gradients(solution, strains);
+    if (bbar) {
+      double volume = 0.0, mean_trace = 0.0;
+      std::fill(mean_div.begin(), mean_div.end(), 0.0);
+      for (unsigned q = 0; q < n_q; ++q) {
+        const double JxW = fe_values.JxW(q);
+        volume += JxW;
+        mean_trace += trace(strains[q]) * JxW;
+        for (unsigned i = 0; i < dofs_per_cell; ++i)
+          mean_div[i] += fe_values[displacement].divergence(i, q) * JxW;
+      }
+      mean_trace /= volume;
+      for (double &d : mean_div)
+        d /= volume;
+      for (unsigned q = 0; q < n_q; ++q)
+        strains[q] += ((mean_trace - trace(strains[q])) / 3.0) * unit_symmetric_tensor<3>();
+    }
     const auto data = qp_data.get_data(Cell(cell));
     cell_matrix = 0.0;
     cell_force = 0.0;
@@ -275,6 +305,8 @@ double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
       const double JxW = fe_values.JxW(q);
       for (unsigned i = 0; i < dofs_per_cell; ++i) {
         b[i] = mandel(fe_values[displacement].symmetric_gradient(i, q));
+        if (bbar)
+          b[i] += ((mean_div[i] - fe_values[displacement].divergence(i, q)) / 3.0) * m;
         cell_force(i) += b[i].dot(sigma) * JxW;
       }
       if (with_matrix) {

@@ -52,6 +52,10 @@ struct CubeParameters {
   double side = 1.0;              ///< L [m] > 0
   unsigned cells_per_side = 8;    ///< n >= 1: n^3 hexahedra
   unsigned degree = 1;            ///< FE_Q degree, 1..3
+  /// full | b-bar. b-bar (Hughes 1980) replaces the volumetric strain at every quadrature
+  /// point by its cell average, which removes the volumetric locking of Q1 under nearly
+  /// isochoric plastic flow; meant for degree 1.
+  std::string volumetric_integration = "full";
   // Linear solver (Trilinos or PETSc, chosen when configuring; docs/continuum-fe.md).
   std::string linear_solver = "gmres";  ///< gmres | cg (symmetric tangents only) | direct
   /// amg | jacobi. amg = the AMG of the configured linear algebra (ML with Trilinos,

@@ -199,6 +199,65 @@ TEST(CubeEngine, NewtonConvergesQuadraticallyOnPlasticSteps)
   EXPECT_GT(worst_order, 1.7) << "Newton lost its quadratic rate";
 }
 
+TEST(CubeEngine, BBarKeepsHomogeneousStatesAndNewtonsQuadraticRate)
+{
+  // B-bar only replaces the volumetric strain by its cell average, so (1) a homogeneous
+  // elastic triaxial state is reproduced exactly, and (2) with the B-bar tangent Newton
+  // stays quadratic on the imperfect plastic cube, whose heterogeneous field B-bar does
+  // change (the curve differs from full integration).
+  CubeParameters elastic_cube = small_cube(3);
+  elastic_cube.volumetric_integration = "b-bar";
+  CubeEngine homogeneous(elastic_cube, elastic(), MPI_COMM_WORLD);
+  const Response e = ProgramRunner(triaxial(0.004), homogeneous).run();
+  const double ez = e.samples.back().strain(2, 2);
+  const double ex = (-p - lambda_L * ez) / (2.0 * (lambda_L + G));
+  EXPECT_NEAR(e.samples.back().strain(0, 0) / ex, 1.0, 1e-8);
+  EXPECT_NEAR(e.samples.back().stress(2, 2) / (lambda_L * (2.0 * ex + ez) + 2.0 * G * ez), 1.0, 1e-8);
+
+  MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(5));
+  m.cohesion = PiecewiseLinear({0.0, 0.01}, {20e3, 30e3}); // hardening
+  std::map<std::string, Response> runs;
+  for (const std::string integration : {"full", "b-bar"}) {
+    CubeParameters cp = small_cube(4);
+    cp.linear_solver = "direct";
+    cp.steps_per_advance = 1;
+    cp.newton_tolerance = 1e-11;
+    cp.imperfection_radius = 0.3;
+    cp.imperfection_cohesion_factor = 0.8;
+    cp.volumetric_integration = integration;
+    CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
+    const LoadingProgram program = plane_strain(0.006, 0.5); // the runner keeps a reference
+    ProgramRunner runner(program, engine);
+    double worst_order = 10.0;
+    unsigned pairs = 0, worst = 0;
+    runner.on_progress([&](const RunProgress &progress) {
+      if (progress.stage != 1 || progress.sample->extras[3] == 0.0)
+        return;
+      const CubeStatistics &st = engine.statistics();
+      worst = std::max(worst, st.last_step_iterations);
+      const auto &r = st.last_step_residuals;
+      for (std::size_t k = 0; k + 1 < r.size(); ++k)
+        if (r[k] < 1e-2 && r[k + 1] > 1e-15) {
+          worst_order = std::min(worst_order, std::log(r[k + 1]) / std::log(r[k]));
+          ++pairs;
+        }
+    });
+    runs[integration] = runner.run();
+    std::printf("%s: most Newton iterations %u, %u asymptotic pairs, lowest order %.2f\n", integration.c_str(),
+                worst, pairs, worst_order);
+    EXPECT_LE(worst, 6u) << integration;
+    EXPECT_GE(pairs, 3u) << integration;
+    EXPECT_GT(worst_order, 1.7) << integration << ": Newton lost its quadratic rate";
+  }
+  double difference = 0.0;
+  const auto &full = runs["full"].samples, &bbar = runs["b-bar"].samples;
+  ASSERT_EQ(full.size(), bbar.size());
+  for (std::size_t k = 0; k < full.size(); ++k)
+    difference = std::max(difference, std::abs(tau_max(full[k].stress) - tau_max(bbar[k].stress)) / p);
+  std::printf("largest |tau_full - tau_bbar| / p = %.2e\n", difference);
+  EXPECT_GT(difference, 1e-6) << "B-bar must change the heterogeneous solution";
+}
+
 TEST(CubeEngine, UnloadingBranchLeavesTheMainPathUnchanged)
 {
   MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(5));
