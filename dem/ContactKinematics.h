@@ -45,7 +45,7 @@ struct ContactKinematics
 
 /// Fills the geometric part of `k` for spheres i and j in contact (r = |d| > 0 given).
 /// Returns the lever arms (R_i - delta/2, R_j - delta/2) through `lever_i`, `lever_j`.
-inline void sphere_sphere_kinematics(ContactKinematics& k, const Vec3& d, double r,
+GEOCOMP_CONTACT_KERNEL void sphere_sphere_kinematics(ContactKinematics& k, const Vec3& d, double r,
                                      double Ri, double Rj, const Vec3& vi, const Vec3& vj,
                                      const Vec3& wi, const Vec3& wj, double inv_mi, double inv_mj)
 {
@@ -67,7 +67,7 @@ inline void sphere_sphere_kinematics(ContactKinematics& k, const Vec3& d, double
 
 /// Fills the geometric part of `k` for a sphere (body j) touching a plane wall (body i)
 /// at signed distance h = (x - p_w) . n_w from the plane.
-inline void sphere_wall_kinematics(ContactKinematics& k, const Vec3& n_w, double h, double R,
+GEOCOMP_CONTACT_KERNEL void sphere_wall_kinematics(ContactKinematics& k, const Vec3& n_w, double h, double R,
                                    const Vec3& v, const Vec3& w, const Vec3& v_wall, double inv_m)
 {
   const double delta = R - h;

@@ -95,7 +95,7 @@ public:
 
   /// Evaluates a law without memory at kinematics `k` (delta > 0), advancing the
   /// tangential history `shear` by k.dt (k.dt == 0 evaluates without advancing it).
-  ContactForce evaluate(const ContactKinematics& k, Vec3& shear) const
+  GEOCOMP_CONTACT_KERNEL ContactForce evaluate(const ContactKinematics& k, Vec3& shear) const
   {
     static_assert(!has_memory, "this law needs its ContactMemory: evaluate(k, shear, memory)");
     const NormalResponse nr = normal_.evaluate(k);

@@ -71,7 +71,7 @@ public:
     }
   }
 
-  NormalResponse evaluate(const ContactKinematics& k) const
+  GEOCOMP_CONTACT_KERNEL NormalResponse evaluate(const ContactKinematics& k) const
   {
     NormalResponse r;
     r.stiffness = stiffness(k.m_eff, k.r_eff);

@@ -57,7 +57,7 @@ public:
   double stiffness(const NormalResponse& nr) const { return p_.stiffness_is_ratio ? p_.k_t * nr.stiffness : p_.k_t; }
 
   /// Advances the spring `xi` (lab frame, acting on j) and returns the tangential force.
-  TangentialResponse evaluate(const ContactKinematics& k, const NormalResponse& nr, Vec3& xi) const
+  GEOCOMP_CONTACT_KERNEL TangentialResponse evaluate(const ContactKinematics& k, const NormalResponse& nr, Vec3& xi) const
   {
     TangentialResponse t;
     const double kt = stiffness(nr);

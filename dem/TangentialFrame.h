@@ -19,7 +19,7 @@
 
 namespace geocomp::dem {
 
-inline void rotate_into_tangent_plane(Vec3& s, const Vec3& n, double spin_angle)
+GEOCOMP_CONTACT_KERNEL void rotate_into_tangent_plane(Vec3& s, const Vec3& n, double spin_angle)
 {
   const double s2 = s.squaredNorm();
   if (s2 == 0.0) return;

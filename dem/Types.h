@@ -17,6 +17,15 @@
 namespace geocomp::dem {
 
 using Vec3 = Eigen::Vector3d;
+
+/// Per-contact kernels of the step loop: inlined into the loop so the compiler can
+/// overlap the long division/square-root chains of consecutive contacts (measured: GCC
+/// otherwise keeps them as calls and the loop runs one contact at a time).
+#if defined(__GNUC__)
+#define GEOCOMP_CONTACT_KERNEL inline __attribute__((always_inline))
+#else
+#define GEOCOMP_CONTACT_KERNEL inline
+#endif
 using Quat = Eigen::Quaterniond;
 
 /// Stable particle id: survives reordering of the storage, neighbour rebuilds and
@@ -25,9 +34,17 @@ using ParticleId = std::uint32_t;
 /// Position of a particle in the current storage order (changes on spatial sorting).
 using Index = std::uint32_t;
 
+/// `index_of` value of an id whose particle was removed (a broken sphere, S2): the id is
+/// never reused, so histories and outputs keyed by ids stay unambiguous.
+inline constexpr Index kNoIndex = 0xffffffffu;
+
 /// `body` value of a sphere that is its own rigid body. A clump gives all its member
 /// spheres the clump's body index; contacts inside one body are never generated.
+/// Values <= kFirstSiblingGroup tag the overlapping children of one broken sphere
+/// (DemSystem::replace_spheres): they do not touch each other until they have separated,
+/// but each moves on its own (no rigid coupling).
 inline constexpr std::int32_t kOwnBody = -1;
+inline constexpr std::int32_t kFirstSiblingGroup = -2;
 
 /// Per-particle flag bits.
 namespace flag {
