@@ -10,6 +10,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -69,11 +70,13 @@ int main(int argc, char **argv)
   iso.name = "consolidation";
   for (auto &a : iso.axes)
     a = AxisDrive::stress(-p);
-  iso.stop_any = {parse_condition("stage_time >= 1", "bench")};
-  iso.max_duration = 2.0;
   Stage shear;
   shear.name = kind;
   const double rate = 1e-3;
+  // The consolidation lasts one sampling interval (at least 1 time unit).
+  const double consolidation = std::max(1.0, strain / rate / samples);
+  iso.stop_any = {parse_condition("stage_time >= " + std::to_string(consolidation), "bench")};
+  iso.max_duration = 2.0 * consolidation;
   if (kind == "isochoric") {
     shear.isochoric = true;
     shear.lambda = 0.0;
