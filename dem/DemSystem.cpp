@@ -127,7 +127,7 @@ void DemSystem::set_radii(const std::vector<double>& radii)
   double growth = 0.0;
   if (!clumps_.empty()) throw std::logic_error("DemSystem::set_radii: not available with clumps");
   for (ParticleId id = 0; id < radii.size(); ++id)
-    growth = std::max(growth, change_radius(store_, index_of_[id], radii[id]));
+    if (index_of_[id] != kNoIndex) growth = std::max(growth, change_radius(store_, index_of_[id], radii[id]));
   radius_growth_ += growth;  // a bound on each particle's increase since the build
   invalidate();
 }
@@ -167,6 +167,12 @@ std::size_t DemSystem::add_wall(const PlaneWall& w)
   if (!(len > 0.0)) throw std::invalid_argument("DemSystem::add_wall: zero normal");
   if (!(c.mu >= 0.0)) throw std::invalid_argument("DemSystem::add_wall: friction must be >= 0");
   c.normal /= len;
+  if (c.bounded()) {  // a rectangle (S4's split box): its axis must lie in the plane
+    c.axis -= c.axis.dot(c.normal) * c.normal;
+    if (!(c.axis.norm() > 1e-12) || !(c.half_u > 0.0) || !(c.half_v > 0.0))
+      throw std::invalid_argument("DemSystem::add_wall: a bounded wall needs an in-plane axis and positive half-sizes");
+    c.axis.normalize();
+  }
   walls_.push_back(c);
   rebuild_requested_ = true;
   invalidate();
@@ -514,7 +520,8 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         WallSlot& s = wslots[c];
         const PlaneWall& wall = walls_[s.wall];
         const Index p = s.particle;
-        const double h = wall.distance(x[p]);
+        Vec3 n_w;
+        const double h = wall.gap(x[p], n_w);  // plane distance for unbounded walls
         double range = R[p];
         if constexpr (Law::has_cohesion) range += wall_bonding ? law.reach(R[p]) : 0.0;
         if (h >= range) {
@@ -526,7 +533,7 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
           continue;
         }
         ContactKinematics k;
-        sphere_wall_kinematics(k, wall.normal, h, R[p], v[p], w[p], wall.velocity, im[p]);
+        sphere_wall_kinematics(k, n_w, h, R[p], v[p], w[p], wall.velocity, im[p]);
         k.overlap_old = s.overlap;
         k.dt = dt_h;
         k.mu = wall.mu;
@@ -603,7 +610,9 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
     if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;
     PlaneWall& wall = walls_[s.wall];
     const Index p = s.particle;
-    const Vec3 xc = x[p] - (R[p] - s.overlap) * wall.normal;  // contact point on the plane
+    Vec3 n_w;
+    wall.gap(x[p], n_w);
+    const Vec3 xc = x[p] - (R[p] - s.overlap) * n_w;  // contact point on the plane
     wall.force -= s.force;
     wall.torque += (xc - wall.point).cross(-s.force);
     if constexpr (Law::has_rolling) wall.torque -= wmem[c].rolling;  // the wall receives -M_r
@@ -645,12 +654,12 @@ std::vector<ContactRecord> DemSystem::contacts() const
     c.wall = true;
     c.i = s.wall;
     c.j = store_.id[s.particle];
-    c.normal = wall.normal;
+    wall.gap(x[s.particle], c.normal);
     c.overlap = s.overlap;
     c.force = s.force;
     c.normal_force = s.force.dot(c.normal);
     c.tangential_force = s.force - c.normal_force * c.normal;
-    c.point = x[s.particle] - (R[s.particle] - s.overlap) * wall.normal;
+    c.point = x[s.particle] - (R[s.particle] - s.overlap) * c.normal;
     c.branch = x[s.particle] - c.point;
     out.push_back(c);
   }
@@ -938,7 +947,24 @@ void DemSystem::read_state(std::istream& in)
                         p.body.size(), p.flags.size()})
     if (a != n) throw binary::StateError("checkpoint: particle arrays of different lengths");
   binary::get_vector(in, index_of_);
-  binary::get_vector(in, walls_);
+  {  // walls: this layout, or the one before bounded walls (legacy::PlaneWallV3, unbounded)
+    std::uint64_t n = 0, size = 0;
+    binary::get(in, n);
+    binary::get(in, size);
+    if (n > (std::uint64_t(1) << 30)) throw binary::StateError("checkpoint: implausible array length");
+    if (size == sizeof(PlaneWall)) {
+      walls_.resize(n);
+      if (n) in.read(reinterpret_cast<char*>(walls_.data()), std::streamsize(n * sizeof(PlaneWall)));
+    } else if (size == sizeof(legacy::PlaneWallV3)) {
+      std::vector<legacy::PlaneWallV3> old(n);
+      if (n) in.read(reinterpret_cast<char*>(old.data()), std::streamsize(n * size));
+      walls_.clear();
+      for (const auto& o : old) walls_.push_back(legacy::convert(o));
+    } else {
+      throw binary::StateError("checkpoint: record size differs (written by another build)");
+    }
+    if (!in) throw binary::StateError("checkpoint: unexpected end of data");
+  }
   binary::get(in, mu_);
   search_.read_state(in);
   binary::get_vector(in, lists_.pairs);

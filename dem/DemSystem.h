@@ -39,6 +39,7 @@
 #include "dem/ContactLaw.h"
 #include "dem/ContactLists.h"
 #include "dem/EnergyLedger.h"
+#include "dem/Fragment.h"
 #include "dem/NeighbourSearch.h"
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
@@ -85,6 +86,10 @@ public:
   ParticleId add_sphere(const Vec3& x, double radius, double density, const Vec3& v = Vec3::Zero(),
                         const Vec3& omega = Vec3::Zero());
   std::size_t n_particles() const { return store_.size(); }
+  /// One past the largest id handed out (ids of removed particles included).
+  std::size_t id_bound() const { return index_of_.size(); }
+  /// False for an id whose sphere was replaced by fragments (replace_spheres).
+  bool alive(ParticleId id) const { return id < index_of_.size() && index_of_[id] != kNoIndex; }
   /// Reserves storage for n particles (avoids over-allocation when adding many).
   void reserve(std::size_t n) { store_.reserve(n); index_of_.reserve(n); }
   /// Current storage index of a particle id.
@@ -111,6 +116,31 @@ public:
   /// All radii at once, `radii[id]` (same rules as set_radius; the rebuild criterion
   /// counts the largest increase of the batch once).
   void set_radii(const std::vector<double>& radii);
+
+  // --- breakage (S2; DemSystemBreakage.cpp)
+  /// Replaces each parent sphere of `batch` by its children (new ids, returned in batch
+  /// order). A child moves with its parent's motion as a rigid body about the children's
+  /// centre of mass, $v_c = v + \omega\times(x_c - x_G)$, $\omega_c = \omega$, so the linear
+  /// momentum of the children equals the parent's times their mass fraction (exactly the
+  /// parent's when mass is conserved). The parent's contact histories are dropped; all
+  /// others are carried over by id. The parent's id is never reused (alive() turns false).
+  /// With `shelter_siblings`, the children of one parent share a sibling group (Types.h)
+  /// and do not touch each other until release_separated_siblings() frees the group.
+  /// Refuses clump members and kinematic particles. The lists are rebuilt and forces
+  /// recomputed before it returns, so contacts() is valid at once. Nothing of this runs
+  /// in step(): a run without breakage costs the same as before.
+  std::vector<ParticleId> replace_spheres(const std::vector<Replacement>& batch, bool shelter_siblings = true);
+  /// The single-parent form of replace_spheres.
+  std::vector<ParticleId> replace_sphere(ParticleId parent, const std::vector<Fragment>& children,
+                                         bool shelter_siblings = true)
+  {
+    return replace_spheres({Replacement{parent, children}}, shelter_siblings);
+  }
+  /// Frees every sibling group none of whose members overlap each other any more (they
+  /// interact normally from the next step); returns the number of groups freed.
+  std::size_t release_separated_siblings();
+  /// Number of spheres still in a sibling group.
+  std::size_t n_sheltered() const;
 
   // --- clumps
   /// Adds a rigid clump of the spheres `members` (world positions) with density rho;

@@ -11,6 +11,7 @@
 
 #include "dem/ContactLaw.h"
 #include "dem/EnergyLedger.h"
+#include "dem/PlaneWall.h"
 
 #include <stdexcept>
 #include <variant>
@@ -52,6 +53,32 @@ inline EnergyLedger convert(const EnergyLedgerV2& o)
   e.dissipated_local = o.dissipated_local;
   e.wall_work = o.wall_work;
   return e;
+}
+
+// PlaneWall before bounded walls (S4's split box added axis, half_u, half_v): the states
+// in the committed core stores hold walls in this layout; they read as unbounded walls.
+struct PlaneWallV3
+{
+  Vec3 point, normal, velocity;
+  double mu;
+  Vec3 force, torque;
+  double work, stiffness;
+  std::size_t n_contacts;
+};
+
+inline PlaneWall convert(const PlaneWallV3& o)
+{
+  PlaneWall w;
+  w.point = o.point;
+  w.normal = o.normal;
+  w.velocity = o.velocity;
+  w.mu = o.mu;
+  w.force = o.force;
+  w.torque = o.torque;
+  w.work = o.work;
+  w.stiffness = o.stiffness;
+  w.n_contacts = o.n_contacts;
+  return w;
 }
 
 }  // namespace geocomp::dem::legacy

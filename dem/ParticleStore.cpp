@@ -45,6 +45,20 @@ void ParticleStore::set_fixed(Index k, bool fixed)
   }
 }
 
+void ParticleStore::remove(Index k)
+{
+  if (k >= size()) throw std::out_of_range("ParticleStore::remove: no such index");
+  const std::size_t last = size() - 1;
+  auto move_last = [&](auto& a) {
+    a[k] = a[last];
+    a.pop_back();
+  };
+  move_last(x); move_last(v); move_last(omega); move_last(force); move_last(torque);
+  move_last(orientation);
+  move_last(radius); move_last(mass); move_last(inv_mass); move_last(inv_inertia);
+  move_last(id); move_last(body); move_last(flags);
+}
+
 void ParticleStore::permute(const std::vector<Index>& order)
 {
   const std::size_t n = size();

@@ -39,6 +39,10 @@ public:
   void set_fixed(Index k, bool fixed);
   bool is_fixed(Index k) const { return (flags[k] & flag::fixed) != 0; }
 
+  /// Removes storage index k: the last particle moves into slot k (the caller updates
+  /// its id-to-index map).
+  void remove(Index k);
+
   /// Reorders all arrays so that new[k] = old[order[k]] (in place, cycle by cycle; the
   /// only scratch is one byte per particle, kept for the next call).
   void permute(const std::vector<Index>& order);

@@ -128,10 +128,68 @@ TEST(CommandLine, ShippedCasesPassCheck)
   for (const auto &e : fs::recursive_directory_iterator(source_dir() / "cases"))
     if (e.path().extension() == ".prm" || e.path().extension() == ".json") {
       const bool s1 = e.path().filename().string().rfind("s1_", 0) == 0;
+      const bool s2 = e.path().filename().string().rfind("s2_", 0) == 0;  // S2 crush cases
+      const bool s4 = e.path().filename().string().rfind("s4_", 0) == 0;  // S4 shear-box cases
       const std::string file = "'" + fs::absolute(e.path()).string() + "'";
-      const Result r = run(fs::temp_directory_path(), s1 ? "rate-sweep " + file + " --check" : "check " + file);
+      const Result r = run(fs::temp_directory_path(), s1   ? "rate-sweep " + file + " --check"
+                                                      : s2 ? "crush " + file + " --check"
+                                                      : s4 ? "shear-box " + file + " --check"
+                                                           : "check " + file);
       EXPECT_EQ(r.code, 0) << e.path() << ": " << r.err;
     }
+}
+
+TEST(CommandLine, CrushChecksTheFourS2CasesAndRefusesBadInputWithExitTwo)
+{
+  const fs::path cwd = fs::temp_directory_path();
+  for (const char *name : {"s2_single_particle", "s2_uniaxial_cube", "s2_uniaxial_4ball", "s2_uniaxial_18ball"}) {
+    const fs::path file = fs::absolute(source_dir() / "cases" / (std::string(name) + ".prm"));
+    ASSERT_TRUE(fs::exists(file)) << file;
+    const Result r = run(cwd, "crush '" + file.string() + "' --check");
+    EXPECT_EQ(r.code, 0) << name << ": " << r.err;
+  }
+  struct Bad {
+    const char *text, *parameter;
+  };
+  const Bad bad[] = {{"subsection breakage\n  set mode = 5-ball\nend\n", "mode"},
+                     {"subsection breakage\n  set characteristic strength = 0\nend\n", "characteristic strength"},
+                     {"subsection breakage\n  set minimum size = 8\n  set breakage limit = 5\nend\n", "minimum size"},
+                     {"subsection single particle\n  set maximum diameter = 20\nend\n", "maximum diameter"},
+                     {"subsection uniaxial\n  set lid speed = fast\nend\n", "lid speed"},
+                     {"set no such entry = 1\n", "no such entry"}};
+  const fs::path file = cwd / "geocomp_bad_crush.prm";
+  for (const Bad &b : bad) {
+    std::ofstream(file) << b.text;
+    const Result r = run(cwd, "crush '" + file.string() + "' --check");
+    EXPECT_EQ(r.code, 2) << b.text;
+    EXPECT_NE(r.err.find(file.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(b.parameter), std::string::npos) << r.err;
+  }
+  fs::remove(file);
+  EXPECT_EQ(run(cwd, "crush /nonexistent/case.prm --check").code, 2);
+}
+
+TEST(CommandLine, ShearBoxRefusesBadInputNamingFileAndParameterWithExitTwo)
+{
+  const fs::path cwd = fs::temp_directory_path();
+  struct Bad {
+    const char *text, *parameter;
+  };
+  const Bad bad[] = {{"subsection loading\n  set max shear = 0.5\nend\n", "max shear"},
+                     {"subsection loading\n  set normal stress = high\nend\n", "normal stress"},
+                     {"subsection grains\n  set mass min = 3\nend\n", "mass min"},
+                     {"subsection box\n  set gap fraction = -1\nend\n", "gap fraction"},
+                     {"set no such entry = 1\n", "no such entry"}};
+  const fs::path file = cwd / "geocomp_bad_shear_box.prm";
+  for (const Bad &b : bad) {
+    std::ofstream(file) << b.text;
+    const Result r = run(cwd, "shear-box '" + file.string() + "' --check");
+    EXPECT_EQ(r.code, 2) << b.text;
+    EXPECT_NE(r.err.find(file.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(b.parameter), std::string::npos) << r.err;
+  }
+  fs::remove(file);
+  EXPECT_EQ(run(cwd, "shear-box /nonexistent/case.prm --check").code, 2);
 }
 
 TEST(CommandLine, ExportRefusesMissingStoresAndNamesWithExitTwo)

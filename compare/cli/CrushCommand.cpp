@@ -1,0 +1,83 @@
+// `geocomp crush`: S2's particle-breakage programs (single-particle crushing, uniaxial
+// compression with cube, 4-ball or 18-ball fragment replacement).
+#include "Commands.h"
+
+#include "common/AtomicFile.h"
+#include "dem/program/CrushCase.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace geocomp::cli {
+
+Command crush_command()
+{
+  Command c;
+  c.name = "crush";
+  c.summary = "S2 particle breakage: single-particle crushing or uniaxial compression (cube replacement)";
+  c.usage = "usage: geocomp crush <case.prm> [--output DIR] [--check] [--print-parameters]\n\n"
+            "Runs S2's single-particle crushing test (spheres crushed one by one between two platens)\n"
+            "or its uniaxial compression of one-size spheres with breakage (docs/s2-breakage.md), and\n"
+            "writes <DIR>/<case>_curve.tsv, _fragments.tsv, _gradation.tsv, _summary.tsv (and\n"
+            "_crushing.tsv for single particles). --check only validates the case; --print-parameters\n"
+            "prints every crush parameter with default and help. Exit 0 ok, 1 run failure, 2 bad input.\n";
+  c.run = [](const std::vector<std::string> &args) {
+    const Arguments a = Arguments::parse(args, {"output"}, {"check", "print-parameters"});
+    if (a.has("print-parameters")) {
+      std::cout << dem::describe_crush_parameters();
+      return static_cast<int>(ok);
+    }
+    if (a.positional.size() != 1)
+      throw UsageError("expected exactly one case file");
+    dem::CrushCase cc;
+    try {
+      cc = dem::read_crush_case(a.positional[0]);
+    } catch (const CaseError &e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return static_cast<int>(bad_input);
+    }
+    if (a.has("check")) {
+      std::cout << cc.file << ": ok (" << cc.setup.mode << ", " << dem::to_string(cc.setup.breakage.rules.mode)
+                << ")\n";
+      return static_cast<int>(ok);
+    }
+    const std::string dir = a.get("output", cc.output_directory);
+    const std::string stem = std::filesystem::path(cc.file).stem().string();
+    try {
+      std::filesystem::create_directories(dir);
+      const dem::CrushResults r =
+        dem::run_crush(cc.setup, [](const std::string &line) { std::cout << line << std::endl; });
+      const auto base = std::filesystem::path(dir) / stem;
+      auto table = [&](const std::string &suffix, const dem::Table &t) {
+        if (t.columns.empty())
+          return;
+        write_atomically(base.string() + suffix, [&](const std::filesystem::path &tmp) {
+          dem::write_table(tmp.string(), t);
+        });
+      };
+      table("_curve.tsv", r.curve);
+      table("_crushing.tsv", r.crushing);
+      table("_fragments.tsv", r.fragments);
+      table("_gradation.tsv", r.gradation);
+      write_atomically(base.string() + "_summary.tsv", [&](const std::filesystem::path &tmp) {
+        std::ofstream out(tmp);
+        out << "key\tvalue\n";
+        for (const std::string &line : r.summary)
+          out << line << "\n";
+        if (!out)
+          throw std::runtime_error("write failed: " + tmp.string());
+      });
+      for (const std::string &line : r.summary)
+        std::cout << line << "\n";
+      std::cout << "wrote " << base.string() << "_*.tsv\n";
+    } catch (const std::exception &e) {
+      std::cerr << "error: crush failed: " << e.what() << "\n";
+      return static_cast<int>(run_failure);
+    }
+    return static_cast<int>(ok);
+  };
+  return c;
+}
+
+} // namespace geocomp::cli

@@ -1,0 +1,231 @@
+#include "dem/program/CrushCase.h"
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <cctype>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace geocomp::dem {
+
+using namespace dealii;
+
+namespace {
+
+void declare(ParameterHandler &prm)
+{
+  prm.declare_entry("title", "", Patterns::Anything(), "A title for the outputs.");
+  prm.enter_subsection("program");
+  prm.declare_entry("mode", "single particle", Patterns::Selection("single particle|uniaxial"),
+                    "S2's single-particle crushing test or the uniaxial (oedometric) compression.");
+  prm.declare_entry("time step safety", "0.2", Patterns::Double(0.0, 1.0),
+                    "dt = safety * critical step of the current particles (recomputed after breakage).");
+  prm.declare_entry("record interval", "200", Patterns::Integer(1), "Steps between rows of the curve table.");
+  prm.leave_subsection();
+  prm.enter_subsection("material");
+  prm.declare_entry("density", "2650", Patterns::Double(0.0), "Particle density [kg/m^3].");
+  prm.declare_entry("density scaling", "1", Patterns::Double(1.0),
+                    "Uniform mass scaling factor (>= 1) for quasi-static runs: lengthens the time step by its "
+                    "square root.");
+  prm.leave_subsection();
+  prm.enter_subsection("contact");
+  prm.declare_entry("normal stiffness", "7.0e7", Patterns::Double(0.0), "kn [N/m] (S2: 7.0e7).");
+  prm.declare_entry("shear stiffness", "6.0e7", Patterns::Double(0.0), "ks [N/m] (S2: 6.0e7).");
+  prm.declare_entry("friction", "0.40", Patterns::Double(0.0), "Particle friction mu (S2: 0.40).");
+  prm.declare_entry("rolling friction", "0.70", Patterns::Double(0.0), "Rolling resistance mu_r (S2: 0.70).");
+  prm.declare_entry("restitution", "0.3", Patterns::Double(0.0, 1.0), "Normal dashpot as a restitution e.");
+  prm.declare_entry("wall friction", "0.0", Patterns::Double(0.0), "Friction of platens and box walls.");
+  prm.declare_entry("local damping", "0.7", Patterns::Double(0.0, 1.0), "Cundall local damping (PFC: 0.7).");
+  prm.leave_subsection();
+  prm.enter_subsection("breakage");
+  prm.declare_entry("mode", "cube", Patterns::Selection("cube|4-ball|18-ball"),
+                    "Fragment replacement: S2's cube mode, McDowell's 4-ball, Ciantia's 18-ball.");
+  prm.declare_entry("cut point", "squared", Patterns::Selection("plain|squared|cubed"),
+                    "Cube mode: random cut point (a,b,c), (a^2,b^2,c^2) (S2's choice) or cubed.");
+  prm.declare_entry("minimum size", "1", Patterns::Double(0.0), "d_M [mm]: smaller children are dropped (S2: 1).");
+  prm.declare_entry("breakage limit", "5", Patterns::Double(0.0), "d_L [mm]: smaller particles never break (S2: 5).");
+  prm.declare_entry("characteristic strength", "10", Patterns::Double(0.0),
+                    "sigma_c [MPa] of S2 eq. (3), F_max / d^2 >= sigma_c (S2 gives no value).");
+  prm.declare_entry("weibull modulus", "0", Patterns::Double(0.0),
+                    "m of sigma_c(d) = sigma_c (d/d0)^(-3/m); 0: no size effect (S2).");
+  prm.declare_entry("reference size", "29", Patterns::Double(0.0), "d0 [mm] of the Weibull size effect.");
+  prm.declare_entry("check interval", "20", Patterns::Integer(1), "Steps between checks of the criterion.");
+  prm.declare_entry("seed", "1", Patterns::Integer(0), "Seed of the fragment generator.");
+  prm.declare_entry("shelter siblings", "true", Patterns::Bool(),
+                    "Children of one parent ignore each other until they no longer overlap.");
+  prm.leave_subsection();
+  prm.enter_subsection("single particle");
+  prm.declare_entry("particles", "100", Patterns::Integer(1, 100000), "Number of particles crushed (S2: 100).");
+  prm.declare_entry("minimum diameter", "28", Patterns::Double(0.0), "[mm] (S2: 28).");
+  prm.declare_entry("maximum diameter", "30", Patterns::Double(0.0), "[mm] (S2: 30).");
+  prm.declare_entry("platen speed", "0.01", Patterns::Double(0.0), "Closing speed of the two platens [m/s].");
+  prm.declare_entry("seed", "1", Patterns::Integer(0), "Seed of the particle sizes.");
+  prm.leave_subsection();
+  prm.enter_subsection("uniaxial");
+  prm.declare_entry("diameter", "40", Patterns::Double(0.0), "One-size particle diameter [mm] (S2: 40).");
+  prm.declare_entry("particles per edge", "5", Patterns::Integer(2, 40), "Lattice sites per box edge (n^3 spheres).");
+  prm.declare_entry("lattice gap", "0.1", Patterns::Double(0.0, 1.0), "Lattice spacing d (1 + gap); jitter up to gap d/2.");
+  prm.declare_entry("seating stress", "50", Patterns::Double(0.0), "Lid stress [kPa] that ends seating.");
+  prm.declare_entry("seating speed", "0.5", Patterns::Double(0.0), "Lid speed during seating [m/s].");
+  prm.declare_entry("lid speed", "0.05", Patterns::Double(0.0), "Lid speed during compression [m/s].");
+  prm.declare_entry("final strain", "0.1", Patterns::Double(0.0, 0.6), "Vertical strain at the end.");
+  prm.declare_entry("seed", "1", Patterns::Integer(0), "Seed of the lattice jitter.");
+  prm.leave_subsection();
+  prm.enter_subsection("output");
+  prm.declare_entry("directory", "results/s2", Patterns::Anything(), "Where the TSV tables go.");
+  prm.declare_entry("gradation bin", "2", Patterns::Double(0.0), "Sieve spacing [mm] (S2 Fig. 7: 2).");
+  prm.leave_subsection();
+}
+
+/// The entry a ParameterHandler message is about, or "(file)".
+std::string parameter_in(const std::string &message)
+{
+  static const std::regex named(R"(entry named (.+?) does not match|entry <([^>]*)>|parameter <([^>]*)>)");
+  static const std::regex subsection(R"(subsection <([^>]*)>|No entry with name <([^>]*)>)");
+  std::smatch m;
+  if (std::regex_search(message, m, named))
+    return m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str();
+  if (std::regex_search(message, m, subsection))
+    return m[1].matched ? m[1].str() : m[2].str();
+  return "(file)";
+}
+
+std::string short_message(const std::string &what)
+{
+  std::string s = what;
+  const auto info = s.find("Additional information:");
+  if (info != std::string::npos)
+    s = s.substr(info + 23);
+  const auto trace = s.find("Stacktrace:");
+  if (trace != std::string::npos)
+    s = s.substr(0, trace);
+  std::string out;
+  for (char c : s)
+    if (!std::isspace(static_cast<unsigned char>(c)) || (!out.empty() && out.back() != ' '))
+      out += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+  while (!out.empty() && (out.back() == ' ' || out.back() == '-'))
+    out.pop_back();
+  return out;
+}
+
+} // namespace
+
+CrushCase parse_crush_case(const std::string &text, const std::string &path)
+{
+  ParameterHandler prm;
+  declare(prm);
+  std::istringstream in(text);
+  try {
+    prm.parse_input(in, path, "", false);
+  } catch (const ExceptionBase &e) {
+    const std::string msg = short_message(e.what());
+    throw CaseError(path, parameter_in(msg), msg);
+  }
+  auto fail = [&](const std::string &parameter, const std::string &expectation) {
+    throw CaseError(path, parameter, expectation);
+  };
+  auto positive = [&](double v, const std::string &parameter, const std::string &what) {
+    if (!(v > 0.0))
+      fail(parameter, "a positive " + what);
+    return v;
+  };
+  CrushCase c;
+  c.file = path;
+  CrushSetup &s = c.setup;
+  s.title = prm.get("title");
+
+  prm.enter_subsection("program");
+  s.mode = prm.get("mode");
+  s.time_step_safety = positive(prm.get_double("time step safety"), "program/time step safety", "value in (0, 1]");
+  s.record_interval = std::uint64_t(prm.get_integer("record interval"));
+  prm.leave_subsection();
+
+  prm.enter_subsection("material");
+  s.density = positive(prm.get_double("density"), "material/density", "density [kg/m^3]");
+  s.density_scaling = prm.get_double("density scaling");
+  prm.leave_subsection();
+
+  prm.enter_subsection("contact");
+  s.contact.normal_stiffness = positive(prm.get_double("normal stiffness"), "contact/normal stiffness", "kn [N/m]");
+  s.contact.shear_stiffness = positive(prm.get_double("shear stiffness"), "contact/shear stiffness", "ks [N/m]");
+  s.contact.friction = prm.get_double("friction");
+  s.contact.rolling_friction = prm.get_double("rolling friction");
+  s.contact.restitution = prm.get_double("restitution");
+  s.contact.wall_friction = prm.get_double("wall friction");
+  s.contact.local_damping = prm.get_double("local damping");
+  prm.leave_subsection();
+  if (s.contact.restitution == 0.0)
+    fail("contact/restitution", "a restitution in (0, 1]");
+
+  prm.enter_subsection("breakage");
+  BreakageMonitor::Settings &b = s.breakage;
+  b.rules.mode = parse_breakage_mode(prm.get("mode"));
+  const std::string cut = prm.get("cut point");
+  b.rules.cut_power = cut == "plain" ? 1 : cut == "squared" ? 2 : 3;
+  b.rules.minimum_size = 1e-3 * prm.get_double("minimum size");
+  b.rules.breakage_limit = 1e-3 * prm.get_double("breakage limit");
+  b.criterion.strength =
+    1e6 * positive(prm.get_double("characteristic strength"), "breakage/characteristic strength", "sigma_c [MPa]");
+  b.criterion.weibull_modulus = prm.get_double("weibull modulus");
+  b.criterion.reference_size = 1e-3 * prm.get_double("reference size");
+  b.interval = std::uint64_t(prm.get_integer("check interval"));
+  b.seed = std::uint64_t(prm.get_integer("seed"));
+  b.shelter_siblings = prm.get_bool("shelter siblings");
+  prm.leave_subsection();
+  if (b.rules.minimum_size > b.rules.breakage_limit)
+    fail("breakage/minimum size", "d_M <= d_L (breakage limit); S2 uses d_M/d_L = 0.25");
+  if (b.criterion.weibull_modulus > 0.0 && !(b.criterion.reference_size > 0.0))
+    fail("breakage/reference size", "a positive d0 [mm] when the Weibull modulus is set");
+
+  prm.enter_subsection("single particle");
+  s.single.particles = prm.get_integer("particles");
+  s.single.d_min = 1e-3 * positive(prm.get_double("minimum diameter"), "single particle/minimum diameter", "diameter");
+  s.single.d_max = 1e-3 * prm.get_double("maximum diameter");
+  s.single.platen_speed = positive(prm.get_double("platen speed"), "single particle/platen speed", "speed [m/s]");
+  s.single.seed = std::uint64_t(prm.get_integer("seed"));
+  prm.leave_subsection();
+  if (s.single.d_max < s.single.d_min)
+    fail("single particle/maximum diameter", "a diameter >= the minimum diameter");
+
+  prm.enter_subsection("uniaxial");
+  s.uniaxial.diameter = 1e-3 * positive(prm.get_double("diameter"), "uniaxial/diameter", "diameter [mm]");
+  s.uniaxial.per_edge = prm.get_integer("particles per edge");
+  s.uniaxial.lattice_gap = prm.get_double("lattice gap");
+  s.uniaxial.seating_stress = 1e3 * positive(prm.get_double("seating stress"), "uniaxial/seating stress", "stress [kPa]");
+  s.uniaxial.seating_speed = positive(prm.get_double("seating speed"), "uniaxial/seating speed", "speed [m/s]");
+  s.uniaxial.lid_speed = positive(prm.get_double("lid speed"), "uniaxial/lid speed", "speed [m/s]");
+  s.uniaxial.final_strain = positive(prm.get_double("final strain"), "uniaxial/final strain", "strain");
+  s.uniaxial.seed = std::uint64_t(prm.get_integer("seed"));
+  prm.leave_subsection();
+
+  prm.enter_subsection("output");
+  c.output_directory = prm.get("directory");
+  s.gradation_bin = 1e-3 * positive(prm.get_double("gradation bin"), "output/gradation bin", "sieve spacing [mm]");
+  prm.leave_subsection();
+  if (c.output_directory.empty())
+    fail("output/directory", "a directory name");
+  return c;
+}
+
+CrushCase read_crush_case(const std::string &path)
+{
+  std::ifstream in(path);
+  if (!in)
+    throw CaseError(path, "(file)", "cannot be read: expected a readable .prm crush case file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_crush_case(text.str(), path);
+}
+
+std::string describe_crush_parameters()
+{
+  ParameterHandler prm;
+  declare(prm);
+  std::ostringstream out;
+  prm.print_parameters(out, ParameterHandler::Text);
+  return out.str();
+}
+
+} // namespace geocomp::dem

@@ -1,0 +1,258 @@
+// S4's direct shear box (see DirectShearBox.h for the model and its choices).
+#include "dem/program/DirectShearBox.h"
+
+#include "dem/TimeStep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace geocomp::dem {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Volume-weighted centre of a clump's members (the scaling centre for growth).
+Vec3 member_centroid(const std::vector<ClumpMember>& m)
+{
+  Vec3 c = Vec3::Zero();
+  double w = 0.0;
+  for (const ClumpMember& s : m) {
+    const double v = s.radius * s.radius * s.radius;
+    c += v * s.centre;
+    w += v;
+  }
+  return c / w;
+}
+
+}  // namespace
+
+DirectShearBox::DirectShearBox(const DirectShearParameters& p) : p_(p)
+{
+  if (!(p_.length > 0.0 && p_.width > 0.0 && p_.half_height > 0.0))
+    throw std::invalid_argument("DirectShearBox: box sizes must be positive");
+  if (!(p_.max_shear > 0.0 && p_.max_shear < 0.5 * p_.length))
+    throw std::invalid_argument("DirectShearBox: max shear must be in (0, L/2)");
+  if (!(p_.normal_stress > 0.0) || !(p_.shear_speed > 0.0))
+    throw std::invalid_argument("DirectShearBox: normal stress and shear speed must be positive");
+  if (!(p_.growth_start > 0.0 && p_.growth_start <= 1.0) || p_.growth_stages < 1)
+    throw std::invalid_argument("DirectShearBox: growth start in (0, 1] and at least one stage");
+  if (p_.output_points < 1) throw std::invalid_argument("DirectShearBox: at least one output point");
+}
+
+// @sect4{Walls}
+//
+// Lower box (moves along x during shear): floor (unbounded), x-, x+, y-, y+, rim.
+// Upper box (fixed; lid servo): lid, x-, x+, y-, y+, rim. See the header for positions.
+void DirectShearBox::build(const std::vector<std::vector<ClumpMember>>& clumps, double lid_height)
+{
+  const double L = p_.length, B = p_.width, H = p_.half_height, g = gap_;
+  const double F = p_.max_shear + 0.1 * L;        // rim width
+  const double top = H + g + 3.0 * H;             // upper sides reach far above the lid
+  auto sys = std::make_unique<DemSystem>();
+  const double E = p_.youngs_modulus * p_.modulus_scale;
+  sys->set_contact_model(HertzMindlin(
+    HertzNormal({E, p_.poisson_ratio, HertzNormal::Damping::restitution, p_.restitution, 0.0, true}),
+    MindlinTangential({E, p_.poisson_ratio, 1.0})));
+  sys->set_friction(p_.mu_contact);
+  sys->set_gravity(Vec3(0.0, 0.0, -p_.gravity));
+  const Vec3 ex = Vec3::UnitX(), ey = Vec3::UnitY(), ez = Vec3::UnitZ();
+  lower_.clear();
+  upper_.clear();
+  PlaneWall floor;
+  floor.normal = ez;
+  floor.mu = p_.mu_lid;  // top and bottom plates grip the specimen (S4: particle-lid 1.0)
+  lower_.push_back(sys->add_wall(floor));
+  lower_.push_back(sys->add_wall(rectangle_wall(Vec3(0, 0.5 * B, 0.5 * H), ex, ey, 0.5 * B, 0.5 * H, p_.mu_side)));
+  lower_.push_back(sys->add_wall(rectangle_wall(Vec3(L, 0.5 * B, 0.5 * H), -ex, ey, 0.5 * B, 0.5 * H, p_.mu_side)));
+  lower_.push_back(sys->add_wall(rectangle_wall(Vec3(0.5 * L, 0, 0.5 * H), ey, ex, 0.5 * L, 0.5 * H, p_.mu_side)));
+  lower_.push_back(sys->add_wall(rectangle_wall(Vec3(0.5 * L, B, 0.5 * H), -ey, ex, 0.5 * L, 0.5 * H, p_.mu_side)));
+  lower_.push_back(sys->add_wall(rectangle_wall(Vec3(-0.5 * F, 0.5 * B, H), ez, ex, 0.5 * F, 0.5 * B, p_.mu_side)));
+  const double zc = 0.5 * (H + g + top), hz = 0.5 * (top - H - g);
+  upper_.push_back(sys->add_wall(rectangle_wall(Vec3(0.5 * L, 0.5 * B, lid_height), -ez, ex, 0.5 * L, 0.5 * B, p_.mu_lid)));
+  upper_.push_back(sys->add_wall(rectangle_wall(Vec3(0, 0.5 * B, zc), ex, ey, 0.5 * B, hz, p_.mu_side)));
+  upper_.push_back(sys->add_wall(rectangle_wall(Vec3(L, 0.5 * B, zc), -ex, ey, 0.5 * B, hz, p_.mu_side)));
+  upper_.push_back(sys->add_wall(rectangle_wall(Vec3(0.5 * L, 0, zc), ey, ex, 0.5 * L, hz, p_.mu_side)));
+  upper_.push_back(sys->add_wall(rectangle_wall(Vec3(0.5 * L, B, zc), -ey, ex, 0.5 * L, hz, p_.mu_side)));
+  upper_.push_back(sys->add_wall(rectangle_wall(Vec3(L + 0.5 * F, 0.5 * B, H + g), -ez, ex, 0.5 * F, 0.5 * B, p_.mu_side)));
+  double r_min = 1e300;
+  for (const auto& c : clumps) {
+    for (const ClumpMember& m : c) r_min = std::min(r_min, m.radius);
+    sys->add_clump(c, p_.clumps.density);
+  }
+  // Rayleigh step of the smallest sphere now (S4): T_R = pi R sqrt(rho/G)/(0.163 nu + 0.8766).
+  const double G = E / (2.0 * (1.0 + p_.poisson_ratio));
+  dt_ = p_.time_step_fraction * rayleigh_time_step(r_min, p_.clumps.density, G, p_.poisson_ratio);
+  sys->set_time_step(dt_);
+  sys->set_local_damping(p_.local_damping);
+  sys_ = std::move(sys);
+}
+
+std::vector<std::vector<ClumpMember>> DirectShearBox::clump_members() const
+{
+  std::vector<std::vector<ClumpMember>> out(sys_->n_clumps());
+  const ParticleStore& st = sys_->particles();
+  for (std::size_t c = 0; c < out.size(); ++c)
+    for (ParticleId id : sys_->clump_members(c)) out[c].push_back({sys_->position(id), st.radius[sys_->index_of(id)]});
+  return out;
+}
+
+// @sect4{Preparation: placement, growth, normal load}
+void DirectShearBox::prepare(const Progress& progress)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const double L = p_.length, B = p_.width, H = p_.half_height;
+  // Clumps: enough for V_box = (1 + e) V_solid unless n_clumps is given.
+  std::vector<ClumpShape> shapes;
+  if (p_.n_clumps > 0) {
+    shapes = generate_s4_clumps(p_.n_clumps, p_.clumps, p_.seed);
+  } else {
+    const double mean_mass = std::exp(p_.clumps.log_mass_mean + 0.5 * p_.clumps.log_mass_sigma * p_.clumps.log_mass_sigma) * 1e-3;
+    const double v_box = L * B * 2.0 * H;
+    const std::size_t guess = std::size_t(2.0 * v_box * p_.clumps.density / ((1.0 + p_.void_ratio) * mean_mass)) + 10;
+    std::vector<ClumpShape> all = generate_s4_clumps(guess, p_.clumps, p_.seed);
+    double solid = 0.0;
+    for (ClumpShape& s : all) {
+      if ((1.0 + p_.void_ratio) * solid >= v_box) break;
+      solid += s.mass / p_.clumps.density;
+      shapes.push_back(std::move(s));
+    }
+  }
+  double dsum = 0.0;
+  std::size_t nsph = 0;
+  for (const ClumpShape& s : shapes)
+    for (const ClumpMember& m : s.members) {
+      dsum += 2.0 * m.radius;
+      ++nsph;
+    }
+  d_mean_ = dsum / double(nsph);
+  gap_ = p_.gap_fraction * d_mean_;
+  info_.n_clumps = shapes.size();
+  info_.n_spheres = nsph;
+  info_.gap = gap_;
+  // Random placement at reduced size in the box column, up to three half-heights.
+  const double z_top = 3.0 * H + gap_;
+  auto clumps = place_clumps(shapes, Vec3(0, 0, 0), Vec3(L, B, z_top), p_.growth_start, p_.seed + 1);
+  build(clumps, z_top);
+  // Growth in stages: scale every clump about its centroid, rebuild, settle.
+  double scale = p_.growth_start;
+  for (int k = 1; k <= p_.growth_stages; ++k) {
+    const double next = p_.growth_start * std::pow(1.0 / p_.growth_start, double(k) / p_.growth_stages);
+    const double f = (k == p_.growth_stages ? 1.0 / scale : next / scale);
+    auto members = clump_members();
+    for (auto& c : members) {
+      const Vec3 o = member_centroid(c);
+      for (ClumpMember& m : c) {
+        m.centre = o + f * (m.centre - o);
+        m.radius *= f;
+      }
+    }
+    if (k == p_.growth_stages) {  // exact full size: the generated radii
+      for (std::size_t c = 0; c < members.size(); ++c)
+        for (std::size_t j = 0; j < members[c].size(); ++j) members[c][j].radius = shapes[c].members[j].radius;
+    }
+    scale = next;
+    build(members, z_top);
+    sys_->run(p_.settle_steps);
+    if (progress) progress("growth", double(k) / p_.growth_stages);
+  }
+  // Normal load: lid just above the highest sphere, then the servo until the load holds.
+  double z_max = 0.0;
+  const ParticleStore& st = sys_->particles();
+  for (std::size_t i = 0; i < st.size(); ++i) z_max = std::max(z_max, st.x[i].z() + st.radius[i]);
+  const Vec3 lid_point = sys_->wall(lid()).point;
+  sys_->set_wall_position(lid(), Vec3(lid_point.x(), lid_point.y(), z_max));
+  const std::size_t chunk = 200;
+  const double t_load = sys_->time();
+  int held = 0;  // consecutive chunks ending within the load tolerance
+  while (held < 5 && sys_->time() - t_load < p_.load_max_time) {
+    run_servo(chunk);
+    info_.load_error = std::abs(sys_->wall(lid()).force.z() / target_load() - 1.0);
+    held = info_.load_error < p_.load_tolerance ? held + 1 : 0;
+    if (progress) progress("load", (sys_->time() - t_load) / p_.load_max_time);
+  }
+  info_.time_step = dt_;
+  info_.prepare_seconds = seconds_since(t0);
+}
+
+void DirectShearBox::servo_lid()
+{
+  const PlaneWall& w = sys_->wall(lid());
+  const double P = w.force.z();  // particles push the lid up: compression positive
+  const double K = std::max(w.stiffness, 1e-300);
+  const double v = p_.servo_factor * (target_load() - P) / (K * dt_);
+  const double vz = -std::clamp(v, -p_.servo_max_speed, p_.servo_max_speed);
+  sys_->set_wall_velocity(lid(), Vec3(0.0, 0.0, vz));
+}
+
+void DirectShearBox::run_servo(std::size_t steps)
+{
+  for (std::size_t s = 0; s < steps; ++s) {
+    servo_lid();
+    sys_->step();
+  }
+}
+
+// @sect4{Measurements (S4 eq. 22-24)}
+ShearRecord DirectShearBox::measure(double U) const
+{
+  ShearRecord r;
+  r.shear = U;
+  r.time = sys_->time();
+  r.lid_rise = sys_->wall(lid()).point.z() - lid_start_;
+  r.normal_force = sys_->wall(lid()).force.z() + p_.lid_weight + p_.box_weight;  // S4 eq. (22)
+  for (std::size_t w : upper_) r.shear_force += sys_->wall(w).force.x();        // S4 eq. (22)
+  r.area = corrected_area(p_.length, p_.width, U);                                // S4 eq. (23)
+  r.sigma_z = r.normal_force / r.area;                                             // S4 eq. (23)
+  r.tau_x = r.shear_force / r.area;                                                // S4 eq. (23)
+  r.mu_b = r.normal_force > 0.0 ? r.shear_force / r.normal_force : 0.0;           // S4 eq. (24)
+  r.inertial_number = 0.1 * p_.shear_speed * std::sqrt(p_.clumps.density / p_.normal_stress);
+  return r;
+}
+
+// @sect4{Shear}
+std::vector<ShearRecord> DirectShearBox::shear(const Progress& progress)
+{
+  if (!sys_) throw std::logic_error("DirectShearBox::shear: prepare() first");
+  const auto t0 = std::chrono::steady_clock::now();
+  sys_->set_local_damping(0.0);
+  lid_start_ = sys_->wall(lid()).point.z();
+  for (std::size_t w : lower_) sys_->set_wall_velocity(w, Vec3(p_.shear_speed, 0.0, 0.0));
+  const auto total = std::uint64_t(std::ceil(p_.max_shear / (p_.shear_speed * dt_)));
+  const std::uint64_t every = std::max<std::uint64_t>(1, total / p_.output_points);
+  std::vector<ShearRecord> curve{measure(0.0)};
+  const double t_start = sys_->time();
+  for (std::uint64_t s = 1; s <= total; ++s) {
+    servo_lid();
+    sys_->step();
+    if (s % every == 0 || s == total) {
+      curve.push_back(measure(std::min(p_.max_shear, p_.shear_speed * (sys_->time() - t_start))));
+      if (progress) progress("shear", double(s) / double(total));
+    }
+  }
+  info_.steps = total;
+  info_.shear_seconds = seconds_since(t0);
+  return curve;
+}
+
+ShearSummary DirectShearBox::summary(const std::vector<ShearRecord>& curve) const
+{
+  ShearSummary s = info_;
+  s.inertial_number = 0.1 * p_.shear_speed * std::sqrt(p_.clumps.density / p_.normal_stress);
+  for (const ShearRecord& r : curve) {
+    if (r.mu_b > s.peak_mu_b) {
+      s.peak_mu_b = r.mu_b;
+      s.shear_at_peak = r.shear;
+    }
+    s.max_contraction = std::max(s.max_contraction, -r.lid_rise);
+  }
+  if (!curve.empty()) s.final_dilation = curve.back().lid_rise;
+  return s;
+}
+
+}  // namespace geocomp::dem
