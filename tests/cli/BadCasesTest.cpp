@@ -2,6 +2,7 @@
 // case: one message naming the file and the parameter, exit code 2, and nothing written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -85,31 +86,42 @@ TEST(BadCases, AtLeastThirtyAndEveryOneListed)
   EXPECT_GE(n, 30);
 }
 
-TEST(BadCases, EachIsRefusedWithFileParameterExitTwoAndNoOutput)
+// One test per command (ctest runs them in parallel): every bad case, refused by that command.
+class BadCasesFor : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BadCasesFor, EachIsRefusedWithFileParameterExitTwoAndNoOutput)
 {
+  const std::string command = GetParam();
   const auto commands = case_commands();
-  ASSERT_FALSE(commands.empty());
+  ASSERT_NE(std::find(commands.begin(), commands.end(), command), commands.end())
+    << command << " is not listed by geocomp --help";
   for (const auto &[file, parameter] : expected()) {
     const fs::path path = fs::absolute(source_dir() / "tests/bad_cases" / file);
-    for (const auto &command : commands) {
-      const fs::path cwd = fs::temp_directory_path() / ("geocomp-bad-" + std::to_string(::getpid()));
-      fs::remove_all(cwd);
-      fs::create_directories(cwd);
-      const Result r = run(cwd, command + " '" + path.string() + "'");
-      EXPECT_EQ(r.code, 2) << command << " " << file << ": " << r.err;
-      EXPECT_NE(r.err.find(path.string()), std::string::npos) << command << " " << file << ": " << r.err;
-      EXPECT_NE(r.err.find("parameter '" + parameter), std::string::npos)
-        << command << " " << file << " should name '" << parameter << "': " << r.err;
-      // One message: a single line on stderr.
-      EXPECT_LE(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-      std::size_t left = 0;
-      for ([[maybe_unused]] const auto &e : fs::recursive_directory_iterator(cwd))
-        ++left;
-      EXPECT_EQ(left, 0u) << command << " " << file << " left files behind";
-      fs::remove_all(cwd);
-    }
+    const fs::path cwd = fs::temp_directory_path() / ("geocomp-bad-" + std::to_string(::getpid()));
+    fs::remove_all(cwd);
+    fs::create_directories(cwd);
+    const Result r = run(cwd, command + " '" + path.string() + "'");
+    EXPECT_EQ(r.code, 2) << command << " " << file << ": " << r.err;
+    EXPECT_NE(r.err.find(path.string()), std::string::npos) << command << " " << file << ": " << r.err;
+    EXPECT_NE(r.err.find("parameter '" + parameter), std::string::npos)
+      << command << " " << file << " should name '" << parameter << "': " << r.err;
+    // One message: a single line on stderr.
+    EXPECT_LE(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    std::size_t left = 0;
+    for ([[maybe_unused]] const auto &e : fs::recursive_directory_iterator(cwd))
+      ++left;
+    EXPECT_EQ(left, 0u) << command << " " << file << " left files behind";
+    fs::remove_all(cwd);
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(BadCases, BadCasesFor,
+                         ::testing::Values("check", "dem", "continuum", "material-point", "pair", "pack", "calibrate"),
+                         [](const ::testing::TestParamInfo<std::string> &info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 TEST(CommandLine, UnreadableCaseAndUnknownOptionsAreBadInput)
 {
