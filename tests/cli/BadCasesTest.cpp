@@ -25,7 +25,10 @@ struct Result {
 /// Runs geocomp in `cwd` with the arguments; captures stderr.
 Result run(const fs::path &cwd, const std::string &args)
 {
-  const fs::path err_file = cwd / ".stderr";
+  // Per process and call: ctest runs several of these tests at once, often in the same cwd.
+  static int calls = 0;
+  const fs::path err_file =
+    fs::temp_directory_path() / ("geocomp-stderr-" + std::to_string(::getpid()) + "-" + std::to_string(++calls));
   const std::string cmd = "cd '" + cwd.string() + "' && '" + geocomp_exe().string() + "' " + args + " >/dev/null 2>'" +
                           err_file.string() + "'";
   const int status = std::system(cmd.c_str());
