@@ -7,12 +7,13 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
 start=$(date +%s)
-echo "== build (Release)"
+stage() { echo "== $1 (at $(( $(date +%s) - start )) s)"; }
+stage "build (Release)"
 scripts/build.sh
-echo "== ctest"
+stage ctest
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900
-echo "== sanitizers (ASan + UBSan) on the engine-independent unit tests"
+stage "sanitizers (ASan + UBSan) on the engine-independent unit tests"
 scripts/sanitize.sh
-echo "== fuzzing the case-file parser (${GEOCOMP_FUZZ_SECONDS:-60} s)"
+stage "fuzzing the case-file parser (${GEOCOMP_FUZZ_SECONDS:-60} s)"
 scripts/fuzz-case-parser.sh "${GEOCOMP_FUZZ_SECONDS:-60}"
 echo "== all tests passed in $(( $(date +%s) - start )) s"
