@@ -128,7 +128,9 @@ SpecimenRunResult ExplicitSpecimen::run(LoadingMode mode, double strain_rate) co
                                   : kinetic::tensile_strength_factor(strain_rate);
   const double t_end = controls_.max_time_factor * std::max(1.0, k_s1) * t_static;
   const long max_steps = static_cast<long>(std::ceil(t_end / dt));
-  const double end_speed = 0.5 * strain_rate * geometry_.height; // each platen
+  // Each platen moves at epsdot H / 2, or the top one alone at epsdot H.
+  const double top_speed = (controls_.fixed_bottom ? 1.0 : 0.5) * strain_rate * geometry_.height;
+  const double bottom_speed = controls_.fixed_bottom ? 0.0 : top_speed;
 
   const std::size_t n = m.dof_handler.n_dofs();
   std::vector<double> u(n, 0.0), v(n, 0.0), f(n, 0.0), inv_mass(n);
@@ -153,12 +155,18 @@ SpecimenRunResult ExplicitSpecimen::run(LoadingMode mode, double strain_rate) co
   double peak = 0.0;
   bool fractured_any = false;
   std::array<double, dofs_per_cell> du;
+  const double rise_time = controls_.platen_rise_fraction * t_static;
+  double platen_gap_change = 0.0; // top minus bottom platen displacement
   for (long step = 1; step <= max_steps; ++step) {
-    // Platen velocities; the pinned x dofs stay at rest.
+    // Platen velocities (a smooth half-cosine rise over rise_time, then constant);
+    // the pinned x dofs stay at rest.
+    const double t_mid = dt * (step - 0.5);
+    const double ramp = t_mid < rise_time ? 0.5 * (1.0 - std::cos(M_PI * t_mid / rise_time)) : 1.0;
+    platen_gap_change += sign * ramp * (top_speed + bottom_speed) * dt;
     for (auto i : m.bottom_y)
-      v[i] = -sign * end_speed;
+      v[i] = -sign * ramp * bottom_speed;
     for (auto i : m.top_y)
-      v[i] = sign * end_speed;
+      v[i] = sign * ramp * top_speed;
     for (auto i : m.pinned_x)
       v[i] = 0.0;
     // Strain increments through the kinetic points, internal forces.
@@ -199,8 +207,8 @@ SpecimenRunResult ExplicitSpecimen::run(LoadingMode mode, double strain_rate) co
       top += f[i];
     for (auto i : m.bottom_y)
       bottom += f[i];
-    const double stress = 0.5 * (top - bottom) / area;
-    const double strain = sign * strain_rate * dt * step;
+    const double stress = (controls_.fixed_bottom ? top : 0.5 * (top - bottom)) / area;
+    const double strain = platen_gap_change / geometry_.height;
     if (sign * stress > peak) {
       peak = sign * stress;
       r.peak_stress = peak;

@@ -69,6 +69,12 @@ void declare(ParameterHandler &prm)
                     "transits of the specimen height (>= 1).");
   prm.declare_entry("stop load fraction", "0.5", Patterns::Double(0.0, 1.0),
                     "A test stops once a point fractured and the end load fell below this fraction of its peak.");
+  prm.declare_entry("fixed bottom", "false", Patterns::Bool(),
+                    "false: both platens move at epsdot H / 2 and the strength is their mean force; true: the "
+                    "bottom platen stays, the top one moves at epsdot H and the strength is its force.");
+  prm.declare_entry("platen rise fraction", "0.5", Patterns::Double(0.0, 1.0),
+                    "The platen speed rises smoothly (half cosine) from rest to its constant value over this "
+                    "fraction of t_st = sigma_st / (E epsdot); 0: impulsive start.");
   prm.leave_subsection();
   prm.enter_subsection("output");
   prm.declare_entry("directory", "results/s1", Patterns::Anything(), "Where the TSV table, SVG plot and gnuplot "
@@ -190,6 +196,8 @@ RateSweepCase parse_rate_sweep_case(const std::string &text, const std::string &
   s.controls.time_step_safety = prm.get_double("time step safety");
   s.controls.quasi_static_transits = prm.get_double("quasi-static transits");
   s.controls.stop_load_fraction = prm.get_double("stop load fraction");
+  s.controls.platen_rise_fraction = prm.get_double("platen rise fraction");
+  s.controls.fixed_bottom = prm.get_bool("fixed bottom");
   prm.leave_subsection();
   if (!(s.controls.time_step_safety > 0.0))
     fail("dynamics/time step safety", "a value in (0, 1]");
