@@ -20,8 +20,11 @@ Command crush_command()
             "Runs S2's single-particle crushing test (spheres crushed one by one between two platens)\n"
             "or its uniaxial compression of one-size spheres with breakage (docs/s2-breakage.md), and\n"
             "writes <DIR>/<case>_curve.tsv, _fragments.tsv, _gradation.tsv, _summary.tsv (and\n"
-            "_crushing.tsv for single particles). --check only validates the case; --print-parameters\n"
-            "prints every crush parameter with default and help. Exit 0 ok, 1 run failure, 2 bad input.\n";
+            "_crushing.tsv for single particles; _polar.tsv, _polar_summary.tsv and _polar_<state>.svg,\n"
+            "the contact polar distributions of S2 Figs. 8-11 after seating, at the peak and at the\n"
+            "end, for uniaxial runs). --check only validates\n"
+            "the case; --print-parameters prints every crush parameter with default and help.\n"
+            "Exit 0 ok, 1 run failure, 2 bad input.\n";
   c.run = [](const std::vector<std::string> &args) {
     const Arguments a = Arguments::parse(args, {"output"}, {"check", "print-parameters"});
     if (a.has("print-parameters")) {
@@ -68,9 +71,20 @@ Command crush_command()
         if (!out)
           throw std::runtime_error("write failed: " + tmp.string());
       });
+      if (!r.polar.empty()) {
+        write_atomically(base.string() + "_polar.tsv",
+                         [&](const std::filesystem::path &tmp) { dem::write_polar_tsv(tmp.string(), r.polar); });
+        write_atomically(base.string() + "_polar_summary.tsv", [&](const std::filesystem::path &tmp) {
+          dem::write_polar_summary_tsv(tmp.string(), r.polar);
+        });
+        for (const dem::PolarState &state : r.polar)
+          write_atomically(base.string() + "_polar_" + state.first + ".svg", [&](const std::filesystem::path &tmp) {
+            dem::write_polar_svg(tmp.string(), cc.setup.title + " (" + state.first + ")", state.second);
+          });
+      }
       for (const std::string &line : r.summary)
         std::cout << line << "\n";
-      std::cout << "wrote " << base.string() << "_*.tsv\n";
+      std::cout << "wrote " << base.string() << (r.polar.empty() ? "_*.tsv\n" : "_*.tsv, _polar_*.svg\n");
     } catch (const std::exception &e) {
       std::cerr << "error: crush failed: " << e.what() << "\n";
       return static_cast<int>(run_failure);

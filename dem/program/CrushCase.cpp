@@ -66,6 +66,12 @@ void declare(ParameterHandler &prm)
   prm.enter_subsection("uniaxial");
   prm.declare_entry("diameter", "40", Patterns::Double(0.0), "One-size particle diameter [mm] (S2: 40).");
   prm.declare_entry("particles per edge", "5", Patterns::Integer(2, 40), "Lattice sites per box edge (n^3 spheres).");
+  prm.declare_entry("packing", "lattice", Patterns::Selection("lattice|grown"),
+                    "lattice: jittered simple cubic lattice (loose, load columns); grown: random placement and "
+                    "frictionless radius growth to the packing fraction (S2 Figs. 8-11 need a random packing).");
+  prm.declare_entry("packing fraction", "0.45", Patterns::Double(0.05, 0.64),
+                    "grown: nominal solid fraction after growth, below jamming (the wall layers of a small box "
+                    "jam it early: 0.55 is jammed for 216 spheres).");
   prm.declare_entry("lattice gap", "0.1", Patterns::Double(0.0, 1.0), "Lattice spacing d (1 + gap); jitter up to gap d/2.");
   prm.declare_entry("seating stress", "50", Patterns::Double(0.0), "Lid stress [kPa] that ends seating.");
   prm.declare_entry("seating speed", "0.5", Patterns::Double(0.0), "Lid speed during seating [m/s].");
@@ -76,6 +82,10 @@ void declare(ParameterHandler &prm)
   prm.enter_subsection("output");
   prm.declare_entry("directory", "results/s2", Patterns::Anything(), "Where the TSV tables go.");
   prm.declare_entry("gradation bin", "2", Patterns::Double(0.0), "Sieve spacing [mm] (S2 Fig. 7: 2).");
+  prm.declare_entry("polar bins", "36", Patterns::Integer(4, 720),
+                    "Angular bins of the contact polar distributions (S2 Figs. 8-11), even (36: 10 deg).");
+  prm.declare_entry("polar walls", "false", Patterns::Bool(),
+                    "Bin particle-wall contacts too (S2 counts particle contacts: false).");
   prm.leave_subsection();
 }
 
@@ -192,6 +202,8 @@ CrushCase parse_crush_case(const std::string &text, const std::string &path)
   prm.enter_subsection("uniaxial");
   s.uniaxial.diameter = 1e-3 * positive(prm.get_double("diameter"), "uniaxial/diameter", "diameter [mm]");
   s.uniaxial.per_edge = prm.get_integer("particles per edge");
+  s.uniaxial.packing = prm.get("packing");
+  s.uniaxial.packing_fraction = prm.get_double("packing fraction");
   s.uniaxial.lattice_gap = prm.get_double("lattice gap");
   s.uniaxial.seating_stress = 1e3 * positive(prm.get_double("seating stress"), "uniaxial/seating stress", "stress [kPa]");
   s.uniaxial.seating_speed = positive(prm.get_double("seating speed"), "uniaxial/seating speed", "speed [m/s]");
@@ -203,7 +215,11 @@ CrushCase parse_crush_case(const std::string &text, const std::string &path)
   prm.enter_subsection("output");
   c.output_directory = prm.get("directory");
   s.gradation_bin = 1e-3 * positive(prm.get_double("gradation bin"), "output/gradation bin", "sieve spacing [mm]");
+  s.polar.bins = prm.get_integer("polar bins");
+  s.polar.include_walls = prm.get_bool("polar walls");
   prm.leave_subsection();
+  if (s.polar.bins % 2 != 0)
+    fail("output/polar bins", "an even number of bins (each contact counts at theta and theta + 180 deg)");
   if (c.output_directory.empty())
     fail("output/directory", "a directory name");
   return c;

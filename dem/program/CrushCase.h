@@ -13,8 +13,8 @@
 //   subsection contact        S2's kn, ks, mu, mu_r; restitution, wall friction, local damping
 //   subsection breakage       mode (cube | 4-ball | 18-ball), cut point, d_M, d_L, sigma_c, Weibull
 //   subsection single particle  particles, diameters, platen speed, seed
-//   subsection uniaxial       diameter, lattice, seating, lid speed, final strain
-//   subsection output         directory, gradation bin
+//   subsection uniaxial       diameter, packing (lattice | grown), seating, lid speed, final strain
+//   subsection output         directory, gradation bin, polar bins, polar walls
 #include "common/case/CaseParameters.h"
 #include "dem/program/CrushPrograms.h"
 

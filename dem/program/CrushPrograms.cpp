@@ -1,6 +1,7 @@
 #include "dem/program/CrushPrograms.h"
 
 #include "dem/program/LatticePacking.h"
+#include "dem/program/RadiusGrowth.h"
 
 #include <algorithm>
 #include <chrono>
@@ -147,6 +148,26 @@ CrushResults single_particle(const CrushSetup& s, const std::function<void(const
 
 // @sect4{Uniaxial (oedometric) compression with breakage (S2 section 2.4)}
 
+/// Radius fraction at which the "grown" packing is placed before growth, and the steps
+/// of rest after it.
+constexpr double kGrowthStart = 0.7;
+constexpr std::uint64_t kGrowthRest = 5000;
+
+/// per_edge^3 spheres of the uniaxial diameter times `start` at random in a cube box whose
+/// edge gives the packing fraction at full size: $L = (n \tfrac{\pi}{6} d^3 / \eta)^{1/3}$.
+Packing random_start(const UniaxialSetup& u, double start, double rho)
+{
+  const std::size_t n = std::size_t(u.per_edge) * std::size_t(u.per_edge) * std::size_t(u.per_edge);
+  const double L = std::cbrt(double(n) * M_PI / 6.0 * std::pow(u.diameter, 3) / u.packing_fraction);
+  Packing p;
+  p.density = rho;
+  p.box_min = Eigen::Vector3d::Zero();
+  p.box_max = Eigen::Vector3d::Constant(L);
+  p.radius.assign(n, start * 0.5 * u.diameter);
+  p.position = place_at_random(p.radius, p.box_min, p.box_max, u.seed);
+  return p;
+}
+
 CrushResults uniaxial(const CrushSetup& s, const std::function<void(const std::string&)>& progress)
 {
   const auto t0 = std::chrono::steady_clock::now();
@@ -156,12 +177,35 @@ CrushResults uniaxial(const CrushSetup& s, const std::function<void(const std::s
                        "lost_mass_fraction", "time_step_s"};
   out.fragments.columns = {"time_s", "parent_id", "parent_diameter_mm", "max_force_N", "children", "lost_mass_kg"};
   const double rho = s.density * s.density_scaling;
-  const Packing pack = jittered_lattice(u.per_edge, 0.5 * u.diameter, 0.0, u.lattice_gap, rho, u.seed);
+  const bool grown = u.packing == "grown";
+  const Packing pack = grown ? random_start(u, kGrowthStart, rho)
+                             : jittered_lattice(u.per_edge, 0.5 * u.diameter, 0.0, u.lattice_gap, rho, u.seed);
   DemSystem sys;
   configure(sys, s);
   sys.reserve(pack.size() * 8);
   for (std::size_t k = 0; k < pack.size(); ++k) sys.add_sphere(pack.position[k], pack.radius[k], rho);
   const std::size_t first = sys.add_box(pack.box_min, pack.box_max, s.contact.wall_friction);
+  std::uint64_t growth_steps = 0;
+  if (grown) {
+    // Frictionless growth to the target radii (S0's radius growth, RadiusGrowth.h).
+    sys.set_friction(0.0);
+    GrowthSettings g;
+    g.rate = 1.0;
+    g.time_step_safety = s.time_step_safety;
+    growth_steps = grow_radii(sys, std::vector<double>(pack.size(), 0.5 * u.diameter), g).cost.steps;
+    sys.set_friction(s.contact.friction);
+    // Below jamming the growth leaves a loose gas with the overlaps of its last collisions:
+    // let them push apart (damped), then stop every sphere, so that the seating stress is
+    // reached by compaction, not by impacts.
+    sys.run(kGrowthRest);
+    for (std::size_t id = 0; id < sys.id_bound(); ++id) {
+      sys.set_velocity(ParticleId(id), Vec3::Zero());
+      sys.set_angular_velocity(ParticleId(id), Vec3::Zero());
+    }
+    growth_steps += kGrowthRest;
+    if (progress) progress("grown to packing fraction " + std::to_string(u.packing_fraction) + " in " +
+                           std::to_string(growth_steps) + " steps");
+  }
   const std::size_t lid = first + 5, floor = first + 4;
   const double area = (pack.box_max.x() - pack.box_min.x()) * (pack.box_max.y() - pack.box_min.y());
   auto total_mass = [&] {
@@ -183,14 +227,17 @@ CrushResults uniaxial(const CrushSetup& s, const std::function<void(const std::s
       throw std::runtime_error("uniaxial: the lid did not reach the seating stress before 70% strain");
   }
   const double h0 = sys.wall(lid).point.z() - pack.box_min.z();
-  const double seating_steps = double(sys.n_steps());
+  out.polar.emplace_back("seated", ContactPolarDistribution::of(sys, s.polar));
+  const double seating_steps = double(sys.n_steps() - growth_steps);
   if (progress) progress("seated at height " + std::to_string(1e3 * h0) + " mm after " +
-                         std::to_string(sys.n_steps()) + " steps");
+                         std::to_string(std::uint64_t(seating_steps)) + " steps");
 
   // Compression at constant lid speed, breakage on.
   sys.set_wall_velocity(lid, Vec3(0, 0, -u.lid_speed));
   BreakageMonitor monitor(s.breakage);
   double strain = 0.0, peak = 0.0, next_report = 0.1 * u.final_strain;
+  double peak_recorded = 0.0, peak_strain = 0.0;
+  ContactPolarDistribution peak_polar = out.polar.back().second;
   std::size_t events_seen = 0;
   const std::uint64_t step_limit = 50'000'000;
   while (strain < u.final_strain) {
@@ -200,6 +247,12 @@ CrushResults uniaxial(const CrushSetup& s, const std::function<void(const std::s
       sys.set_time_step(std::min(sys.time_step(), s.time_step_safety * sys.critical_time_step()));
     const double stress = sys.wall(lid).force.z() / area;
     peak = std::max(peak, stress);
+    if (sys.n_steps() % s.record_interval == 0 && stress > peak_recorded) {
+      // The most loaded state among the recorded rows (S2 Figs. 8-11 under load).
+      peak_recorded = stress;
+      peak_polar = ContactPolarDistribution::of(sys, s.polar);
+      peak_strain = strain;
+    }
     if (sys.n_steps() % s.record_interval == 0)
       out.curve.rows.push_back({strain, 1e-3 * stress, -1e-3 * sys.wall(floor).force.z() / area,
                                 double(sys.n_particles()), double(monitor.n_broken()), monitor.lost_mass() / mass0,
@@ -216,6 +269,12 @@ CrushResults uniaxial(const CrushSetup& s, const std::function<void(const std::s
     out.fragments.rows.push_back({e.time, double(e.parent), 1e3 * e.diameter, e.max_force, double(e.children),
                                   e.lost_mass});
   }
+  out.polar.emplace_back("peak", peak_polar);
+  out.polar.emplace_back("final", ContactPolarDistribution::of(sys, s.polar));
+  const ContactPolarDistribution& roses = out.polar.back().second;
+  const PolarRose& vertical = roses.rose(ContactPolarDistribution::vertical, ContactPolarDistribution::all);
+  const double axial_force = vertical.sector(0.0, kPolarSectorHalfWidth).mean_force;
+  const double lateral_force = vertical.sector(90.0, kPolarSectorHalfWidth).mean_force;
   const ParticleStore& p = sys.particles();
   std::vector<double> d(p.size());
   for (Index k = 0; k < p.size(); ++k) d[k] = 2.0 * p.radius[k];
@@ -226,10 +285,19 @@ CrushResults uniaxial(const CrushSetup& s, const std::function<void(const std::s
   const auto n_distinct = std::unique(distinct.begin(), distinct.end()) - distinct.begin();
   out.summary = {kv("initial_particles", double(n0)), kv("final_particles", double(sys.n_particles())),
                  kv("broken", double(monitor.n_broken())), kv("distinct_sizes", double(n_distinct)),
-                 kv("peak_vertical_stress_kPa", 1e-3 * peak), kv("final_strain", strain),
+                 kv("peak_vertical_stress_kPa", 1e-3 * peak), kv("peak_recorded_strain", peak_strain),
+                 kv("final_strain", strain),
                  kv("lost_mass_fraction", monitor.lost_mass() / mass0),
                  kv("relative_mass_error", (total_mass() + monitor.lost_mass()) / mass0 - 1.0),
-                 kv("seated_height_mm", 1e3 * h0), kv("seating_steps", seating_steps),
+                 kv("sheltered_particles", double(sys.n_sheltered())),
+                 kv("particles_without_contact", double(roses.free_particles())),
+                 kv("final_contacts", double(roses.contacts(ContactPolarDistribution::all))),
+                 kv("final_mechanical_contacts", double(roses.contacts(ContactPolarDistribution::mechanical))),
+                 kv("final_vertical_contact_a_c", vertical.contact_cos2()),
+                 kv("final_vertical_axial_to_lateral_mean_force",
+                    lateral_force > 0.0 ? axial_force / lateral_force : 0.0),
+                 kv("growth_steps", double(growth_steps)), kv("seated_height_mm", 1e3 * h0),
+                 kv("seating_steps", seating_steps),
                  kv("steps", double(sys.n_steps())), kv("initial_time_step_s", dt0),
                  kv("final_time_step_s", sys.time_step()), kv("wall_seconds", seconds_since(t0))};
   return out;

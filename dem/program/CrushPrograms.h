@@ -6,10 +6,13 @@
 //    28-30 mm), one at a time between two platens closing at constant speed, until the
 //    crushing criterion (S2 eq. (3)) breaks it; records the platen force against the
 //    approach, the crushing force and every fragment (S2 Figs. 2-4);
-//  - uniaxial: one-size spheres (S2: 40 mm) on a jittered lattice in a rigid box,
-//    seated by the lid to a small stress with breakage off, then compressed
-//    one-dimensionally by the lid at constant speed with breakage on; records vertical
-//    stress against strain, the number broken and the final gradation (S2 Fig. 7).
+//  - uniaxial: one-size spheres (S2: 40 mm) on a jittered lattice (or grown from random
+//    positions to a random packing) in a rigid box, seated by the lid to a small stress
+//    with breakage off, then compressed one-dimensionally by the lid at constant speed
+//    with breakage on; records vertical stress against strain, the number broken, the
+//    final gradation (S2 Fig. 7) and the polar distributions of contact number and mean
+//    contact force after seating, at the most loaded recorded state and at the end
+//    (S2 Figs. 8-11, ContactPolarDistribution.h).
 // Contact: S2's linear law with rolling resistance (kn, ks, mu, mu_r) plus a small
 // normal dashpot and Cundall local damping (quasi-static loading, as in PFC).
 // Time step: safety * critical step of the current particles, recomputed after every
@@ -19,6 +22,7 @@
 #pragma once
 
 #include "dem/BreakageMonitor.h"
+#include "dem/program/ContactPolarOutput.h"
 
 #include <functional>
 #include <string>
@@ -49,6 +53,11 @@ struct UniaxialSetup
 {
   double diameter = 0.040;       ///< [m]
   int per_edge = 5;              ///< lattice sites per box edge (per_edge^3 spheres)
+  /// "lattice": jittered simple cubic lattice (loose; seating makes load columns);
+  /// "grown": random placement at 0.7 of the size in a cube box, frictionless radius
+  /// growth (RadiusGrowth.h) to `packing_fraction`, then seating as for the lattice.
+  std::string packing = "lattice";
+  double packing_fraction = 0.45;  ///< grown: solid fraction after growth (below jamming)
   double lattice_gap = 0.1;      ///< lattice spacing 2R (1 + gap)
   double seating_stress = 50e3;  ///< [Pa] lid stress that ends seating
   double seating_speed = 0.5;    ///< [m/s]
@@ -68,6 +77,7 @@ struct CrushSetup
   double time_step_safety = 0.2;
   std::uint64_t record_interval = 200;   ///< steps between curve rows
   double gradation_bin = 0.002;          ///< [m] sieve spacing of the gradation (S2 Fig. 7: 2 mm)
+  ContactPolarDistribution::Settings polar;  ///< roses of S2 Figs. 8-11 (uniaxial)
   SingleParticleSetup single;
   UniaxialSetup uniaxial;
 };
@@ -86,6 +96,9 @@ struct CrushResults
   Table fragments;   ///< every child of a breakage event (single) / of the first breakage (uniaxial)
   Table gradation;   ///< percent passing by mass vs size
   std::vector<std::string> summary;  ///< "key<TAB>value" lines
+  /// uniaxial: contact roses (S2 Figs. 8-11) "seated" (after seating), "peak" (the curve row
+  /// of largest lid stress) and "final"
+  std::vector<PolarState> polar;
 };
 
 /// Runs the program of `s`; `progress` gets a line now and then.

@@ -171,6 +171,8 @@ TEST(CommandLine, CrushChecksTheFourS2CasesAndRefusesBadInputWithExitTwo)
                      {"subsection breakage\n  set minimum size = 8\n  set breakage limit = 5\nend\n", "minimum size"},
                      {"subsection single particle\n  set maximum diameter = 20\nend\n", "maximum diameter"},
                      {"subsection uniaxial\n  set lid speed = fast\nend\n", "lid speed"},
+                     {"subsection uniaxial\n  set packing = hexagonal\nend\n", "packing"},
+                     {"subsection output\n  set polar bins = 35\nend\n", "polar bins"},
                      {"set no such entry = 1\n", "no such entry"}};
   const fs::path file = cwd / "geocomp_bad_crush.prm";
   for (const Bad &b : bad) {
