@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-120}
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DGEOCOMP_BUILD_TESTS=ON \
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1" -DGEOCOMP_BUILD_TESTS=ON \
   -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined" "${launcher[@]}" >/dev/null
 cmake --build build-fuzz -j "$(nproc)" --target case_parser_fuzzer
 corpus=$(mktemp -d); trap 'rm -rf "$corpus"' EXIT

@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DGEOCOMP_SANITIZE=ON "${launcher[@]}" >/dev/null
+# -O1: the sanitizers need no more, and it compiles much faster than Release's -O3.
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1" -DGEOCOMP_SANITIZE=ON "${launcher[@]}" >/dev/null
 cmake --build build-asan --target help > build-asan/targets.txt
 targets=()
 for t in common_tests dem_tests dem_specimen_tests continuum_model_tests compare_tests; do
