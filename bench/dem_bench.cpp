@@ -81,6 +81,8 @@ int main(int argc, char** argv)
   sys.set_time_step(dt);
   sys.set_skin(skin);
   sys.set_num_threads(threads);
+  // GEOCOMP_SCALAR_PAIRS=1: the scalar pair path instead of the batched AVX2 kernel (same bits).
+  if (const char* e = std::getenv("GEOCOMP_SCALAR_PAIRS"); e && std::string(e) == "1") sys.set_batched_pairs(false);
 
   sys.run(std::size_t(n_eq));
   const std::size_t rebuilds0 = sys.n_rebuilds();
@@ -91,9 +93,9 @@ int main(int argc, char** argv)
 
   const double z_mean = 2.0 * double(sys.n_touching_pairs()) / double(n);
   const EnergyLedger e = sys.energy();
-  std::printf("geocomp N=%zu threads=%d rebuilds_timed=%zu listed_pairs/particle=%.2f coordination=%.3f KE=%.4g J\n",
+  std::printf("geocomp N=%zu threads=%d rebuilds_timed=%zu listed_pairs/particle=%.2f coordination=%.3f KE=%.17g J batched=%d\n",
               n, threads, sys.n_rebuilds() - rebuilds0, double(sys.contact_lists().pairs.size()) / double(n), z_mean,
-              e.kinetic());
+              e.kinetic(), sys.batched_pairs() ? 1 : 0);
   std::printf("geocomp N=%zu threads=%d bytes/particle: %.0f\n", n, threads, double(sys.memory_bytes()) / double(n));
   std::printf("geocomp N=%zu threads=%d steps=%ld seconds=%.3f ns/particle-step: %.1f\n", n, threads, n_timed, seconds,
               seconds / double(n_timed) / double(n) * 1e9);

@@ -21,6 +21,58 @@ constexpr std::size_t kBlock = 2048;
 
 std::size_t n_blocks(std::size_t n) { return (n + kBlock - 1) / kBlock; }
 
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "PairBatchKernel reads Vec3 arrays as 3 doubles each");
+static_assert(kBlock % 4 == 0, "batches of four slots start at block starts");
+
+/// S0's k_n(m*, R*) of a LinearNormal, for the batched kernel.
+double linear_normal_stiffness(const void* part, double m_eff, double r_eff)
+{
+  return static_cast<const LinearNormal*>(part)->stiffness(m_eff, r_eff);
+}
+
+/// The batched kernel's view of the particles, the slots and a LinearSpringDashpot law.
+PairBatchArgs pair_batch_args(const LinearSpringDashpot& law, const ParticleStore& store, ContactLists& lists,
+                              double mu, double dt_h, bool track)
+{
+  PairBatchArgs a;
+  a.x = store.x.front().data();
+  a.v = store.v.front().data();
+  a.omega = store.omega.front().data();
+  a.radius = store.radius.data();
+  a.inv_mass = store.inv_mass.data();
+  a.slots = reinterpret_cast<unsigned char*>(lists.pairs.data());
+  const PairSlot probe;
+  const auto at = [&](const void* member) {
+    return std::size_t(static_cast<const unsigned char*>(member) - reinterpret_cast<const unsigned char*>(&probe));
+  };
+  a.layout = PairSlotLayout{sizeof(PairSlot), at(&probe.i),     at(&probe.j),
+                            at(&probe.overlap), at(probe.shear.data()), at(probe.force.data()), at(probe.lever.data())};
+  a.layout.contiguous_outputs = a.layout.shear == a.layout.overlap + 8 && a.layout.force == a.layout.shear + 24 &&
+                                a.layout.lever == a.layout.force + 24;
+  const LinearNormal::Parameters& np = law.normal().parameters();
+  LinearLawConstants& c = a.law;
+  c.stiffness_direct = np.stiffness_input == LinearNormal::Stiffness::direct;
+  c.k_n = np.k_n;
+  c.stiffness = &linear_normal_stiffness;
+  c.normal_part = &law.normal();
+  c.damping = np.damping_input == LinearNormal::Damping::direct          ? LinearLawConstants::Damping::direct
+              : np.damping_input == LinearNormal::Damping::per_unit_mass ? LinearLawConstants::Damping::per_unit_mass
+                                                                         : LinearLawConstants::Damping::restitution;
+  c.c_n = np.c_n;
+  c.gamma_n = np.gamma_n;
+  c.zeta = law.normal().damping_ratio();
+  c.clamp_tensile = np.clamp_tensile;
+  const LinearTangential::Parameters& tp = law.tangential().parameters();
+  c.k_t_is_ratio = tp.stiffness_is_ratio;
+  c.k_t = tp.k_t;
+  c.c_t_is_ratio = tp.damping_is_ratio;
+  c.c_t = tp.c_t;
+  a.mu = mu;
+  a.dt = dt_h;
+  a.track_losses = track;
+  return a;
+}
+
 /// q <- exp(dt omega / 2) (x) q with the exact axis-angle quaternion; for the small
 /// angles of DEM steps (theta < 1e-2) a 5th-order series equals sin/cos to round-off.
 inline void rotate_orientation(Quat& q, const Vec3& omega, double dt)
@@ -457,6 +509,13 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
   [[maybe_unused]] auto& pmem = lists_.pair_memory;
   [[maybe_unused]] auto& wmem = lists_.wall_memory;
   [[maybe_unused]] const bool wall_bonding = wall_bonding_;
+  // S0's law on an AVX2 processor: four slots at a time (PairBatchKernel.h, same bits).
+  [[maybe_unused]] bool batched = false;
+  [[maybe_unused]] PairBatchArgs batch;
+  if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
+    batched = batched_pairs() && !pairs.empty() && n > 0;
+    if (batched) batch = pair_batch_args(law, store_, lists_, mu, dt_h, Track);
+  }
 
 #pragma omp parallel num_threads(threads_)
   {
@@ -465,6 +524,17 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
     for (std::int64_t b = 0; b < std::int64_t(nbp); ++b) {
       double damp = 0.0, fric = 0.0, bond = 0.0;
       const std::size_t end = std::min(pairs.size(), std::size_t(b + 1) * kBlock);
+      if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
+        if (batched) {
+          const PairBatchLosses l = evaluate_linear_pairs_batched(batch, std::size_t(b) * kBlock, end);
+          if constexpr (Track) {
+            block_losses_[3 * b] = l.damping;
+            block_losses_[3 * b + 1] = l.friction;
+            block_losses_[3 * b + 2] = 0.0;
+          }
+          continue;
+        }
+      }
       for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
         PairSlot& s = pairs[c];
         const Index i = s.i, j = s.j;
@@ -571,8 +641,10 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
       const double Rp = R[p];
       for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
         const PairSlot& s = pairs[inc[e] >> 1];
-        if (inc[e] & 1u) f += s.force;
-        else f -= s.force;
+        // +F on j, -F on i, without a branch (the role is random: a mispredicted branch
+        // per contact); f + (-1 x F) and f - F are the same IEEE operation.
+        const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
+        f += sign * s.force;
         t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
         if constexpr (Law::has_rolling) {       // M_r on j, -M_r on i
           if (inc[e] & 1u) t += pmem[inc[e] >> 1].rolling;

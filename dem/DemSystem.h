@@ -41,6 +41,7 @@
 #include "dem/EnergyLedger.h"
 #include "dem/Fragment.h"
 #include "dem/NeighbourSearch.h"
+#include "dem/PairBatchKernel.h"
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
 
@@ -194,6 +195,11 @@ public:
   double overdamped() const { return overdamped_; }
   /// Accumulate dissipated energy every step (small cost; off by default).
   void set_energy_tracking(bool on) { track_energy_ = on; }
+  /// Evaluate the pairs of the linear spring-dashpot law four at a time with the AVX2
+  /// kernel where the processor has it (default on; PairBatchKernel.h). Both paths give
+  /// the same bits; off forces the scalar path (used by the test that compares them).
+  void set_batched_pairs(bool on) { batched_pairs_ = on; }
+  bool batched_pairs() const { return batched_pairs_ && pair_batch_kernel_available(); }
   /// Reorder particle storage by cell at rebuilds (default on).
   void set_spatial_sorting(bool on) { search_.set_spatial_sorting(on); }
   /// Critical-time-step estimate for the current law and particles: sqrt(m/k_max) for
@@ -264,6 +270,7 @@ private:
   Vec3 gravity_ = Vec3::Zero();
   double local_damping_ = 0.0;
   bool track_energy_ = false;
+  bool batched_pairs_ = true;
   bool ready_ = false;
   bool rebuild_requested_ = true;
   double overdamped_ = 0.0;      // beta of first-order dynamics (0: Newtonian)

@@ -52,6 +52,8 @@ public:
   static LinearNormal with_stiffness(double k_n, double restitution, bool clamp_tensile = true);
 
   const Parameters& parameters() const { return p_; }
+  /// Damping ratio zeta of the restitution input (DEM-NOTES section 3).
+  double damping_ratio() const { return zeta_; }
 
   double stiffness(double m_eff, double r_eff) const
   {

@@ -1,0 +1,95 @@
+// @sect3{The batched pair kernel of the linear spring-dashpot law (S0 eq. (1)-(2))}
+//
+// Why it exists: the particle-pair loop of pass A (ContactLists.h) is the engine's hot
+// loop, and for S0's law, `LinearSpringDashpot` = LinearNormal x LinearTangential, it was
+// bound by the latency of one contact at a time (a division, two square roots and three
+// data-dependent branches per contact: apart/touching, the frame-rotation series, stick/slip).
+// This kernel evaluates four pair slots at once in 256-bit vectors (AVX2), with every
+// branch turned into a lane select, so the unpredictable branches disappear and the
+// divisions and roots of four contacts share one instruction.
+//
+// It is the same law as the scalar path, operation for operation:
+// sphere_sphere_kinematics (ContactKinematics.h), LinearNormal::evaluate,
+// rotate_into_tangent_plane (TangentialFrame.h), LinearTangential::evaluate and
+// ContactLaw::evaluate, written in the same order with the same roundings (IEEE +, -, *,
+// /, sqrt are exact-rounded in both, and the kernel is compiled without FMA contraction).
+// So a slot gets the same bits from either path; the test
+// `PairBatchKernel.EqualsTheScalarLawBitForBit` holds the two to that, over touching, apart,
+// new, sliding and sticking contacts. Each lane depends on its own slot only, so the result
+// is independent of how slots fall into batches and threads (determinism is unchanged).
+//
+// This header is free of Eigen on purpose: the kernel's translation unit is compiled
+// with -mavx2, and Eigen compiled with another instruction set in one program would
+// break the one-definition rule (its alignment of Quaterniond changes with AVX). The
+// caller passes raw arrays (Vec3 arrays are three contiguous doubles per particle) and
+// the slot layout below, which DemSystem.cpp checks against PairSlot with static_asserts.
+//
+// Availability: `pair_batch_kernel_available()` is true when the kernel was compiled
+// (x86-64 with a compiler that takes -mavx2) and the processor has AVX2; otherwise
+// DemSystem uses the scalar path, which gives the same numbers.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace geocomp::dem {
+
+/// Byte layout of a pair slot as the kernel reads and writes it (PairSlot, ContactLists.h).
+struct PairSlotLayout
+{
+  std::size_t size = 0;                 ///< sizeof(PairSlot)
+  std::size_t i = 0, j = 0;             ///< offsets of the two uint32 storage indices
+  std::size_t overlap = 0, shear = 0, force = 0, lever = 0;  ///< offsets of the doubles
+  /// True when overlap, shear, force and lever are ten consecutive doubles and the shear
+  /// is followed by at least one more double of the slot (read, never used).
+  bool contiguous_outputs = false;
+};
+
+/// The constants of a LinearSpringDashpot law, as the scalar parts use them.
+struct LinearLawConstants
+{
+  bool stiffness_direct = true;   ///< k_n given in N/m (else S0's formula through `stiffness`)
+  double k_n = 0.0;
+  /// S0's k_n(m*, R*) for `stiffness_direct == false` (LinearNormal::stiffness); pure, so the
+  /// kernel calls it once per distinct (m*, R*) it meets in a row.
+  double (*stiffness)(const void* normal_part, double m_eff, double r_eff) = nullptr;
+  const void* normal_part = nullptr;
+  enum class Damping { direct, per_unit_mass, restitution } damping = Damping::restitution;
+  double c_n = 0.0, gamma_n = 0.0, zeta = 0.0;
+  bool clamp_tensile = true;
+  bool k_t_is_ratio = true;
+  double k_t = 0.0;
+  bool c_t_is_ratio = true;
+  double c_t = 0.0;
+};
+
+/// Particle arrays (storage order) and the slots of one call.
+struct PairBatchArgs
+{
+  const double* x = nullptr;      ///< 3 per particle
+  const double* v = nullptr;
+  const double* omega = nullptr;
+  const double* radius = nullptr; ///< 1 per particle
+  const double* inv_mass = nullptr;
+  unsigned char* slots = nullptr; ///< the PairSlot array
+  PairSlotLayout layout;
+  LinearLawConstants law;
+  double mu = 0.0;                ///< Coulomb coefficient between particles
+  double dt = 0.0;                ///< history increment (0: evaluate without advancing)
+  bool track_losses = false;
+};
+
+/// Energy dissipated by the slots of one call (summed lane by lane, then over the lanes).
+struct PairBatchLosses
+{
+  double damping = 0.0, friction = 0.0;
+};
+
+/// True when the batched kernel exists in this build and runs on this processor.
+bool pair_batch_kernel_available();
+
+/// Evaluates slots [begin, end) of `args.slots`; returns their losses when
+/// `args.track_losses`. Precondition: pair_batch_kernel_available().
+PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& args, std::size_t begin, std::size_t end);
+
+}  // namespace geocomp::dem
