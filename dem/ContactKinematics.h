@@ -49,10 +49,12 @@ GEOCOMP_CONTACT_KERNEL void sphere_sphere_kinematics(ContactKinematics& k, const
                                      double Ri, double Rj, const Vec3& vi, const Vec3& vj,
                                      const Vec3& wi, const Vec3& wj, double inv_mi, double inv_mj)
 {
-  // One division gives 1/r, m* and R* (the hot loop is bound by divisions).
+  // m* and R* from the bodies alone (not through r), so that every pair of the same two
+  // kinds of sphere gets the same bits: laws whose constants depend on (m*, R*) (S0's k_n)
+  // can then reuse them from one contact to the next (PairBatchKernel.cpp).
   const double inv_m = inv_mi + inv_mj, r_sum = Ri + Rj;
-  const double q = 1.0 / (r * inv_m * r_sum);
-  const Vec3 n = d * (q * inv_m * r_sum);
+  const double w = 1.0 / (inv_m * r_sum);
+  const Vec3 n = d * (1.0 / r);
   const double delta = r_sum - r;
   const double li = Ri - 0.5 * delta, lj = Rj - 0.5 * delta;
   const Vec3 v_rel = (vj - vi) - (li * wi + lj * wj).cross(n);
@@ -60,8 +62,8 @@ GEOCOMP_CONTACT_KERNEL void sphere_sphere_kinematics(ContactKinematics& k, const
   k.overlap = delta;
   k.v_n = v_rel.dot(n);
   k.v_t = v_rel - k.v_n * n;
-  k.m_eff = q * r * r_sum;
-  k.r_eff = Ri * Rj * q * r * inv_m;
+  k.m_eff = w * r_sum;
+  k.r_eff = Ri * Rj * inv_m * w;
   k.spin = 0.5 * (wi + wj).dot(n);
 }
 

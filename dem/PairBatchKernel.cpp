@@ -118,16 +118,16 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
     // sphere_sphere_kinematics
     const Pack r = sqrt4(r2);
     const Pack inv_m = gather1(a.inv_mass, ii) + gather1(a.inv_mass, jj);
-    const Pack q = one / (r * inv_m * rs);
-    const P3 n = d * (q * inv_m * rs);
+    const Pack w_eff = one / (inv_m * rs);
+    const P3 n = d * (one / r);
     const Pack delta = rs - r;
     const Pack li = Ri - 0.5 * delta, lj = Rj - 0.5 * delta;
     const P3 wi = gather3(a.omega, ii), wj = gather3(a.omega, jj);
     const P3 v_rel = (gather3(a.v, jj) - gather3(a.v, ii)) - cross(li * wi + lj * wj, n);
     const Pack v_n = dot(v_rel, n);
     const P3 v_t = v_rel - v_n * n;
-    const Pack m_eff = q * r * rs;
-    const Pack r_eff = Ri * Rj * q * r * inv_m;
+    const Pack m_eff = w_eff * rs;
+    const Pack r_eff = Ri * Rj * inv_m * w_eff;
     const Pack spin = 0.5 * dot(wi + wj, n);
 
     // LinearNormal::evaluate
