@@ -29,6 +29,7 @@ inline Pack sqrt4(Pack a) { return Pack(_mm256_sqrt_pd(__m256d(a))); }
 /// std::max(a, b) lane by lane: (a < b) ? b : a.
 inline Pack max4(Pack a, Pack b) { return select(a < b, b, a); }
 inline Pack abs4(Pack a) { return select(a < 0.0, -a, a); }
+inline bool all(Mask m) { return _mm256_movemask_pd(__m256d(m)) == 0xf; }
 
 struct P3
 {
@@ -157,12 +158,19 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
     // LinearTangential::evaluate
     const Pack k_t = law.k_t_is_ratio ? law.k_t * k_n : splat(law.k_t);
     const Pack c_t = law.c_t_is_ratio ? law.c_t * c_n : splat(law.c_t);
+    const Pack inv_k_t = law.k_t_is_ratio ? one / k_t : splat(1.0 / law.k_t);  // same bits either way
     P3 xi;
-    {  // the slot's tangential history: (shear x, y, z, next double) of each lane, transposed
+    if (L.contiguous_outputs) {  // the slot's spring: (x, y, z, the next double of the slot) per lane, transposed
       __m256d a0 = _mm256_loadu_pd(&slot_double(slot[0], L.shear)), a1 = _mm256_loadu_pd(&slot_double(slot[1], L.shear));
       __m256d a2 = _mm256_loadu_pd(&slot_double(slot[2], L.shear)), a3 = _mm256_loadu_pd(&slot_double(slot[3], L.shear));
       transpose4(a0, a1, a2, a3);
       xi = {Pack(a0), Pack(a1), Pack(a2)};
+    } else {
+      for (int l = 0; l < kLanes; ++l) {
+        xi.x[l] = slot_double(slot[l], L.shear);
+        xi.y[l] = slot_double(slot[l], L.shear + 8);
+        xi.z[l] = slot_double(slot[l], L.shear + 16);
+      }
     }
     {  // rotate_into_tangent_plane(xi, n, spin * dt)
       const Pack s2 = dot(xi, xi);
@@ -171,7 +179,9 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
       const Pack p2 = dot(p, p);
       const Pack e = s2 / p2 - 1.0;
       const Pack series = 1.0 + e * (0.5 - e * (0.125 - e * 0.0625));
-      const Pack f = select(abs4(e) < 1e-4, series, sqrt4(1.0 + e));
+      const Mask small = abs4(e) < 1e-4;
+      // The root only when a lane needs it (the frame turns little per step: rarely).
+      const Pack f = all(small) ? series : select(small, series, sqrt4(1.0 + e));
       const P3 turned = select(p2 > 1e-24 * s2, p * f, P3{zero, zero, zero});
       xi = select(s2 == 0.0, xi, turned);
     }
@@ -182,7 +192,7 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
     const Mask slide = f2 > f_max * f_max;                      // developed friction
     const P3 f_slide = f_trial * (f_max / sqrt4(f2));
     const P3 xi_slide = P3{-(f_slide.x + c_t * v_t.x), -(f_slide.y + c_t * v_t.y), -(f_slide.z + c_t * v_t.z)} *
-                        (1.0 / k_t);
+                        inv_k_t;
     const P3 f_t = select(slide, f_slide, f_trial);
     const P3 xi_new = select(slide, xi_slide, xi);
 
