@@ -61,6 +61,9 @@ struct CubeParameters {
   /// amg | jacobi. amg = the AMG of the configured linear algebra (ML with Trilinos,
   /// BoomerAMG with PETSc); "boomeramg" and "ml" are accepted as aliases of amg.
   std::string preconditioner = "amg";
+  /// Near-null space given to ML (Trilinos AMG only): rigid-body = the three translations
+  /// and the three rotations (default), translations = the translations only.
+  std::string near_null_space = "rigid-body";
   double linear_tolerance = 1e-10;  ///< relative residual of the Krylov solve
   unsigned max_linear_iterations = 5000;
   // Newton and load stepping.

@@ -16,8 +16,9 @@
 #include <deal.II/lac/generic_linear_algebra.h>
 
 // Linear algebra, chosen at configure time (CMake GEOCOMP_CUBE_LINEAR_ALGEBRA):
-// Trilinos (Epetra + ML algebraic multigrid with the rigid translations as near-null
-// space; the default, see docs/continuum-fe.md for the timings) or PETSc (BoomerAMG).
+// Trilinos (Epetra + ML smoothed-aggregation multigrid with the six rigid-body modes as
+// near-null space; the default, see docs/continuum-fe.md for the timings) or PETSc
+// (BoomerAMG).
 #if defined(GEOCOMP_CUBE_USE_PETSC)
 namespace geocomp::continuum {
 namespace LA = dealii::LinearAlgebraPETSc;
@@ -106,7 +107,11 @@ struct CubeEngine::Impl {
   dl::AffineConstraints<double> predictor_constraints; ///< with the step's wall increments
 
   LA::MPI::SparseMatrix matrix;
-  std::vector<std::vector<bool>> constant_modes; ///< rigid translations, for ML
+  std::vector<std::vector<bool>> constant_modes; ///< components of the dofs, for ML
+  /// The six rigid-body modes over the locally owned dofs (row map order), column-major,
+  /// n_owned x 6: translations x, y, z, then rotations about x, y, z through the centre.
+  std::vector<double> rigid_body_modes;
+  void make_rigid_body_modes();
   LA::MPI::Vector solution;        ///< ghosted current iterate
   LA::MPI::Vector solution_owned;  ///< same, owned entries
   LA::MPI::Vector old_solution;    ///< owned, last committed

@@ -4,7 +4,7 @@
 //   mpirun -np N cube_benchmark [key=value ...]
 //     n=8 degree=1 program=plane-strain|triaxial|isochoric strain=0.02 samples=20
 //     solver=gmres|cg|direct regularization=crack-band|none integration=full|b-bar radius=0.2 factor=0.8
-//     steps=2 output=DIR verbose=0 localization=200 kpeak=0.002 kres=0.02 phi=30 psi=5
+//     nullspace=rigid-body|translations steps=2 output=DIR verbose=0 localization=200 kpeak=0.002 kres=0.02 phi=30 psi=5
 #include "common/ProgramRunner.h"
 #include "continuum/fe/CubeEngine.h"
 
@@ -49,6 +49,7 @@ int main(int argc, char **argv)
   cp.cells_per_side = std::stoi(get("n", "8"));
   cp.degree = std::stoi(get("degree", "1"));
   cp.linear_solver = get("solver", "gmres");
+  cp.near_null_space = get("nullspace", "rigid-body");
   cp.regularization = get("regularization", "crack-band");
   cp.volumetric_integration = get("integration", "full");
   cp.imperfection_radius = std::stod(get("radius", "0.2"));
