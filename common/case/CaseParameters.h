@@ -110,6 +110,7 @@ struct ContinuumParameters {
   std::string regularization = "none"; ///< crack-band | none
   std::string linear_solver = "gmres";  ///< gmres | cg | direct
   std::string preconditioner = "amg";  ///< amg | jacobi
+  std::string near_null_space = "rigid-body"; ///< ML's near-null space: rigid-body | translations
   double newton_tolerance = 1e-9;
   unsigned int load_steps_per_sample = 2;
   unsigned int point_substeps = 20;     ///< material-point increments per sample

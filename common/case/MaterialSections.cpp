@@ -119,6 +119,11 @@ void declare_continuum(dealii::ParameterHandler &prm)
   prm.declare_entry("preconditioner", "amg", Selection("amg|jacobi"),
                     "Preconditioner of the Krylov solvers: algebraic multigrid (Trilinos ML, or Hypre "
                     "BoomerAMG in a PETSc build) or Jacobi.");
+  prm.declare_entry("near null space", "rigid-body", Selection("rigid-body|translations"),
+                    "Near-null space of the algebraic multigrid (Trilinos ML): the six rigid-body modes "
+                    "(Krylov iterations nearly independent of the mesh; a costlier set-up) or the three "
+                    "translations (cheaper per solve on meshes up to ~64^3, iterations grow with the mesh). "
+                    "docs/continuum-fe.md, Performance.");
   prm.declare_entry("newton tolerance", "1e-9", Double(1e-14, 1e-2),
                     "Newton converges when |R_free| <= tolerance * max(|F_int|, |F_ext|).");
   prm.declare_entry("load steps per sample", "2", Integer(1, 10000),
@@ -190,6 +195,7 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   p.regularization = prm.get("regularization");
   p.linear_solver = prm.get("linear solver");
   p.preconditioner = prm.get("preconditioner");
+  p.near_null_space = prm.get("near null space");
   p.newton_tolerance = prm.get_double("newton tolerance");
   p.load_steps_per_sample = prm.get_integer("load steps per sample");
   p.point_substeps = prm.get_integer("point substeps per sample");

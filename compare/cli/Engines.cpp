@@ -130,6 +130,7 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
     p.volumetric_integration = c.continuum.volumetric_integration;
     p.linear_solver = c.continuum.linear_solver;
     p.preconditioner = c.continuum.preconditioner;
+    p.near_null_space = c.continuum.near_null_space;
     p.newton_tolerance = c.continuum.newton_tolerance;
     p.steps_per_advance = c.continuum.load_steps_per_sample;
     p.band_reference_width = c.continuum.reference_element_size;
