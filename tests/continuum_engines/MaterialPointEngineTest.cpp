@@ -6,7 +6,12 @@
 #include "continuum/driver/MaterialPointEngine.h"
 #include "continuum/models/MohrCoulombModel.h"
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 using namespace geocomp;
 using namespace geocomp::continuum;
@@ -111,6 +116,53 @@ TEST(MaterialPointEngine, IsochoricProgramKeepsTheVolumeAndReachesItsStop)
   // Plastic at the end, and with psi > 0 at constant volume the mean pressure has grown.
   EXPECT_NE(stage2.back()->extras[r.extra_index("state_flag")], 0.0);
   EXPECT_LT(mean_stress(stage2.back()->stress), -1.05 * p);
+}
+
+TEST(MaterialPointEngine, IsochoricPeakEqualsMohrCoulombClosedForm)
+{
+  // S0's isochoric shear (eq. 3, lambda = 0) of a perfectly plastic Mohr-Coulomb point
+  // without dilatancy. Elastic path: deps = (e, 0, -e) keeps p, so yield comes at
+  // tau = (sigma_1 - sigma_3)/2 = c cos(phi) + p sin(phi). Plastic flow with psi = 0 is
+  // isochoric and lies in the (1, 3) plane, so the point then stays on the main plane of
+  // the surface, tau = c cos(phi) - (sigma_1 + sigma_3)/2 sin(phi) (tension positive),
+  // with sigma_2 strictly between: the closed form of the isochoric peak in terms of the
+  // mean of the extreme stresses, which drifts only by the second-order volume change
+  // of the imposed box (det(I + eps) = 1, not tr(eps) = 0).
+  MaterialPointEngine engine(std::make_shared<MohrCoulombModel>(perfect_mohr_coulomb(E, nu, c, phi, 0.0)));
+  LoadingProgram program;
+  program.sample_interval = 0.05;
+  Stage shear;
+  shear.name = "isochoric";
+  shear.isochoric = true;
+  shear.lambda = 0.0;
+  shear.isochoric_rate = 0.01;
+  shear.stop_any = {parse_condition("gamma_max >= 0.02", "test")};
+  shear.max_duration = 100.0;
+  program.stages = {isotropic_stage(p, 1.0), shear};
+  program.validate();
+  const Response r = ProgramRunner(program, engine).run();
+  const double tau_yield = c * std::cos(phi) + p * std::sin(phi);
+  int plastic = 0;
+  double tau_peak = 0.0;
+  for (const auto &s : r.samples) {
+    if (s.stage != 1)
+      continue;
+    const Eigen::Vector3d sig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(s.stress).eigenvalues(); // ascending
+    const double tau = 0.5 * (sig[2] - sig[0]);
+    tau_peak = std::max(tau_peak, tau);
+    if (s.extras[r.extra_index("state_flag")] == 0.0) {
+      EXPECT_LT(tau, tau_yield * (1.0 + 1e-12)) << "elastic sample above the yield closed form, t = " << s.time;
+      continue;
+    }
+    ++plastic;
+    EXPECT_NEAR(tau / (c * std::cos(phi) - 0.5 * (sig[2] + sig[0]) * std::sin(phi)), 1.0, 1e-10) << "t = " << s.time;
+    EXPECT_GT(sig[1], sig[0] + 1e-3 * tau);
+    EXPECT_LT(sig[1], sig[2] - 1e-3 * tau);
+  }
+  EXPECT_GT(plastic, 5);
+  // The peak is the yield closed form up to the volume drift (gamma_max <= 2 %: ~1e-3).
+  EXPECT_NEAR(tau_peak / tau_yield, 1.0, 5e-3);
+  std::printf("[isochoric] %d plastic samples, tau_peak / (c cos phi + p sin phi) = %.6f\n", plastic, tau_peak / tau_yield);
 }
 
 TEST(MaterialPointEngine, UnloadingBranchLeavesTheMainPathUnchanged)
