@@ -186,6 +186,7 @@ public:
   void set_gravity(const Vec3& g) { gravity_ = g; invalidate(); }
   /// Cundall local damping coefficient lambda_d (0: off, default).
   void set_local_damping(double lambda) { local_damping_ = lambda; }
+  double local_damping_coefficient() const { return local_damping_; }
   /// First-order ("Aristotelian", S0 packing; Klishin & Mikenina 2021) dynamics when
   /// beta > 0: each step sets $v = \beta\,\Delta t\,F/m$, $\omega = \beta\,\Delta t\,T/I$ and drifts
   /// $x \mathrel{+}= \Delta t\,v$ (overdamped, no inertia: explicit steepest descent, stable for
@@ -193,6 +194,14 @@ public:
   /// is counted as dissipated_local. beta = 0 (default): velocity Verlet.
   void set_overdamped(double beta);
   double overdamped() const { return overdamped_; }
+  /// FIRE (Bitzek et al. 2006, DEM-NOTES section 8), the velocity part: the power
+  /// $P = \sum F\cdot v + T\cdot\omega$ of the dynamic particles (summed in storage order).
+  double power() const;
+  /// FIRE mixing: $v \leftarrow (1-\alpha)v + \alpha|v|\hat F$ with global norms over the dynamic
+  /// particles (and the same for $\omega$ and the torques).
+  void fire_mix(double alpha);
+  /// Sets every dynamic particle's velocity and spin to zero (FIRE's reaction to P <= 0).
+  void stop_particles();
   /// Accumulate dissipated energy every step (small cost; off by default).
   void set_energy_tracking(bool on) { track_energy_ = on; }
   /// Evaluate the pairs of the linear spring-dashpot law four at a time with the AVX2

@@ -39,6 +39,7 @@ struct SpecimenParameters {
   double density = 2650.0;              ///< [kg/m^3]
   double isotropic_pressure = 2.0e6;    ///< [Pa] sigma_0, compression positive
   bool aristotelian = false;            ///< first-order (overdamped) packing dynamics
+  std::string frictionless_relaxation = "damped"; ///< damped | fire: the frictionless rest after growth
 };
 
 struct ContactParameters {

@@ -36,6 +36,11 @@ void declare_specimen(dealii::ParameterHandler &prm)
                     "All-round pre-stress sigma_0 [Pa], compression positive (S0: 8.093 MPa; 2 MPa).");
   prm.declare_entry("aristotelian", "false", Bool(),
                     "Pack with first-order (overdamped, velocity proportional to force) dynamics.");
+  prm.declare_entry("frictionless relaxation", "damped", Selection("damped|fire"),
+                    "How the grown frictionless packing comes to rest at fixed walls (Newtonian growth): "
+                    "Cundall local damping, or FIRE (Bitzek et al. 2006: velocities turned towards the "
+                    "forces, adaptive time step). The friction-on rest and the consolidation stay damped "
+                    "(docs/specimens.md).");
   prm.leave_subsection();
 }
 
@@ -57,7 +62,10 @@ SpecimenParameters parse_specimen(dealii::ParameterHandler &prm, const Reader &r
   p.density = prm.get_double("density");
   p.isotropic_pressure = prm.get_double("isotropic pressure");
   p.aristotelian = prm.get_bool("aristotelian");
+  p.frictionless_relaxation = prm.get("frictionless relaxation");
   prm.leave_subsection();
+  if (p.aristotelian && p.frictionless_relaxation == "fire")
+    r.fail("specimen/frictionless relaxation", "fire needs Newtonian dynamics: set aristotelian = false or frictionless relaxation = damped");
   if (p.source == "store" && (p.store_file.empty() || p.store_name.empty()))
     r.fail(p.store_file.empty() ? "specimen/store file" : "specimen/store name",
            "source = store needs both 'store file' and 'store name'");

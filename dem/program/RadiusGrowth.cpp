@@ -169,14 +169,43 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
   const double time0 = system.time();
   RelaxResult r;
   std::uint64_t checks = 0;
+  // FIRE state (RestCriteria::fire).
+  const double dt0 = system.time_step(), damping0 = system.local_damping_coefficient();
+  double dt = dt0, alpha = k.fire_alpha;
+  unsigned positive = 0;
+  if (k.fire)
+    system.set_local_damping(0.0);
   while (true) {
-    system.run(k.check_steps);
+    if (!k.fire) {
+      system.run(k.check_steps);
+    } else {
+      for (std::uint64_t n = 0; n < k.check_steps; ++n) {
+        system.step();
+        if (system.power() > 0.0) {
+          system.fire_mix(alpha);
+          if (++positive > k.fire_delay) {
+            dt = std::min(dt * k.fire_dt_growth, k.fire_dt_max * dt0);
+            alpha *= k.fire_alpha_decay;
+          }
+        } else {
+          system.stop_particles();
+          dt *= 0.5;
+          alpha = k.fire_alpha;
+          positive = 0;
+        }
+        system.set_time_step(dt);
+      }
+    }
     r.rest = rest_state(system);
     r.converged = k.satisfied_by(r.rest);
     if (r.converged || system.time() - time0 >= k.max_time)
       break;
     if (progress && ++checks % 20 == 0)
       progress(phase, system.time() - time0);
+  }
+  if (k.fire) {
+    system.set_time_step(dt0);
+    system.set_local_damping(damping0);
   }
   r.cost.steps = system.n_steps() - steps0;
   r.cost.time = system.time() - time0;

@@ -51,6 +51,16 @@ struct RestCriteria
   double kinetic_ratio = 1e-6;  ///< kinetic / elastic energy
   double max_time = 1.0;        ///< [s] of DEM time before giving up
   std::uint64_t check_steps = 500;
+  /// FIRE (Bitzek et al. 2006) instead of the system's own damping: after every step,
+  /// if the power P = F.v > 0 the velocities are turned towards the forces,
+  /// v <- (1 - a) v + a |v| F/|F|, and after `fire_delay` such steps dt grows by
+  /// `fire_dt_growth` (up to `fire_dt_max` times the starting step) and a shrinks by
+  /// `fire_alpha_decay`; if P <= 0 the particles stop, dt halves and a restarts at
+  /// `fire_alpha`. Local damping is off meanwhile; the starting dt is restored at the end.
+  /// For frictionless packings only: with friction the rest state depends on the path.
+  bool fire = false;
+  double fire_alpha = 0.1, fire_alpha_decay = 0.99, fire_dt_growth = 1.1, fire_dt_max = 2.0;
+  unsigned fire_delay = 5;
   bool satisfied_by(const RestState &s) const
   {
     return s.unbalanced <= unbalanced && s.kinetic_ratio() <= kinetic_ratio;

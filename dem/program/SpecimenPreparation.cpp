@@ -52,6 +52,14 @@ ContactParameters frictionless(const ContactParameters &c)
 }
 
 /// Sets the packing dynamics: first-order (Aristotelian) or Newtonian with damping.
+/// The rest criteria of the frictionless phase, with FIRE when the case asks for it.
+RestCriteria frictionless_rest(const CaseDescription &c, const PreparationCriteria &k)
+{
+  RestCriteria r = k.packing;
+  r.fire = c.specimen.frictionless_relaxation == "fire";
+  return r;
+}
+
 void set_packing_dynamics(DemSystem &s, bool aristotelian, const PreparationCriteria &k)
 {
   if (aristotelian) {
@@ -191,7 +199,7 @@ GrownPacking grow_packing(const CaseDescription &c, const PreparationCriteria &k
   gs.interval = k.growth_interval;
   gs.time_step_safety = c.dem.time_step_safety;
   g.growth = grow_radii(g.system, target.radii, gs, progress);
-  g.rest = relax(g.system, k.packing, "rest (frictionless)", progress);
+  g.rest = relax(g.system, frictionless_rest(c, k), "rest (frictionless)", progress);
   return g;
 }
 
@@ -211,7 +219,8 @@ PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCri
   rec.seed = c.seed;
   rec.pressure = s.isotropic_pressure;
   rec.aristotelian = s.aristotelian;
-  const std::string dynamics = s.aristotelian ? "Aristotelian" : "Newtonian";
+  const std::string dynamics = s.aristotelian ? "Aristotelian"
+                                : s.frictionless_relaxation == "fire" ? "Newtonian, FIRE rest" : "Newtonian";
 
   DemSystem system;
   if (s.source == "generate") {
@@ -239,7 +248,7 @@ PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCri
     rec.initial_packing_fraction = p.packing_fraction();
     system = make_system(p, frictionless(c.contact), c.dem);
     set_packing_dynamics(system, s.aristotelian, k);
-    const RelaxResult r = relax(system, k.packing, "rest (frictionless)", progress);
+    const RelaxResult r = relax(system, frictionless_rest(c, k), "rest (frictionless)", progress);
     rec.frictionless = r.cost;
     rec.frictionless_rest = r.rest;
     rec.frictionless_converged = r.converged;

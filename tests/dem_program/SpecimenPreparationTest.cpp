@@ -219,6 +219,25 @@ TEST(SpecimenPreparation, AristotelianRouteReachesTheSameCriteria)
   EXPECT_EQ(s.system.overdamped(), 0.0); // handed over Newtonian
 }
 
+TEST(SpecimenPreparation, FireRestReachesTheSameCriteriaAndHandsBackTheTimeStep)
+{
+  // FIRE for the frictionless rest: the same rest criteria, the packing's time step and
+  // damping restored for the friction-on rest and the consolidation that follow.
+  CaseDescription c = preparation_case(200, 0.69, 5);
+  c.specimen.frictionless_relaxation = "fire";
+  const PreparedSpecimen fire = prepare_specimen(c);
+  c.specimen.frictionless_relaxation = "damped";
+  const PreparedSpecimen damped = prepare_specimen(c);
+  std::printf("[fire] %s\n[damped] frictionless rest %llu steps\n", fire.record.describe().c_str(),
+              (unsigned long long)damped.record.frictionless.steps);
+  EXPECT_TRUE(fire.record.frictionless_converged);
+  EXPECT_LE(fire.record.frictionless_rest.unbalanced, PreparationCriteria{}.packing.unbalanced);
+  EXPECT_LE(fire.record.frictionless_rest.kinetic_ratio(), PreparationCriteria{}.packing.kinetic_ratio);
+  EXPECT_LE(max_wall_stress_error(fire.system, kPressure), 0.005);
+  EXPECT_EQ(fire.system.time_step(), damped.system.time_step());
+  EXPECT_NE(fire.record.method.find("FIRE"), std::string::npos);
+}
+
 TEST(SpecimenPreparation, SameSeedGivesTheSameSpecimenBitForBit)
 {
   const PreparedSpecimen again = prepare_specimen(preparation_case(300, 0.69));
