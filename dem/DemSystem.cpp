@@ -681,8 +681,8 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
       const double Rp = R[p];
       for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
         const PairSlot& s = pairs[inc[e] >> 1];
-        // +F on j, -F on i, without a branch (the role is random: a mispredicted branch
-        // per contact); f + (-1 x F) and f - F are the same IEEE operation.
+        // +F on j, -F on i, without a branch on the role; f + (-1 x F) and f - F are the
+        // same IEEE operation (measured: no change in speed against the branch).
         const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
         f += sign * s.force;
         t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
