@@ -25,6 +25,23 @@ std::shared_ptr<const ConstitutiveModel> perfect_material()
   return std::make_shared<MohrCoulombModel>(perfect_mohr_coulomb(E, nu, c, phi, psi));
 }
 
+/// Isotropic consolidation to p, then S0's isochoric shear (eq. 3, lambda = 0) until `stop`.
+LoadingProgram isochoric_program(double sample_interval, const std::string &stop)
+{
+  LoadingProgram program;
+  program.sample_interval = sample_interval;
+  Stage shear;
+  shear.name = "isochoric";
+  shear.isochoric = true;
+  shear.lambda = 0.0;
+  shear.isochoric_rate = 0.01;
+  shear.stop_any = {parse_condition(stop, "test")};
+  shear.max_duration = 100.0;
+  program.stages = {isotropic_stage(p, 1.0), shear};
+  program.validate();
+  return program;
+}
+
 LoadingProgram triaxial_program()
 {
   LoadingProgram program;
@@ -90,17 +107,7 @@ TEST(MaterialPointEngine, ElasticConsolidationMatchesBulkModulus)
 TEST(MaterialPointEngine, IsochoricProgramKeepsTheVolumeAndReachesItsStop)
 {
   MaterialPointEngine engine(perfect_material());
-  LoadingProgram program;
-  program.sample_interval = 0.1;
-  Stage shear;
-  shear.name = "isochoric";
-  shear.isochoric = true;
-  shear.lambda = 0.0;
-  shear.isochoric_rate = 0.01;
-  shear.stop_any = {parse_condition("gamma_max >= 0.05", "test")};
-  shear.max_duration = 100.0;
-  program.stages = {isotropic_stage(p, 1.0), shear};
-  program.validate();
+  const LoadingProgram program = isochoric_program(0.1, "gamma_max >= 0.05");
   const Response r = ProgramRunner(program, engine).run();
   ASSERT_EQ(r.stage_end_reasons[1], "gamma_max >= 0.05");
   std::vector<const ResponseSample *> stage2;
@@ -129,18 +136,7 @@ TEST(MaterialPointEngine, IsochoricPeakEqualsMohrCoulombClosedForm)
   // mean of the extreme stresses, which drifts only by the second-order volume change
   // of the imposed box (det(I + eps) = 1, not tr(eps) = 0).
   MaterialPointEngine engine(std::make_shared<MohrCoulombModel>(perfect_mohr_coulomb(E, nu, c, phi, 0.0)));
-  LoadingProgram program;
-  program.sample_interval = 0.05;
-  Stage shear;
-  shear.name = "isochoric";
-  shear.isochoric = true;
-  shear.lambda = 0.0;
-  shear.isochoric_rate = 0.01;
-  shear.stop_any = {parse_condition("gamma_max >= 0.02", "test")};
-  shear.max_duration = 100.0;
-  program.stages = {isotropic_stage(p, 1.0), shear};
-  program.validate();
-  const Response r = ProgramRunner(program, engine).run();
+  const Response r = ProgramRunner(isochoric_program(0.05, "gamma_max >= 0.02"), engine).run();
   const double tau_yield = c * std::cos(phi) + p * std::sin(phi);
   int plastic = 0;
   double tau_peak = 0.0;
