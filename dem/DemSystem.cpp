@@ -5,6 +5,10 @@
 #include "dem/LegacyState.h"
 #include "dem/TimeStep.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -273,7 +277,14 @@ void DemSystem::set_time_step(double dt)
   dt_ = dt;
 }
 
-void DemSystem::set_num_threads(int n) { threads_ = std::max(1, n); }
+void DemSystem::set_num_threads(int n)
+{
+#ifdef _OPENMP
+  if (n <= 0)
+    n = omp_get_max_threads(); // 0: the OpenMP default (OMP_NUM_THREADS, else the cores)
+#endif
+  threads_ = std::max(1, n);
+}
 
 double DemSystem::critical_time_step() const
 {

@@ -181,6 +181,7 @@ public:
   double time_step() const { return dt_; }
   /// Verlet skin s (default 0.1 of the largest diameter, set at the first step).
   void set_skin(double s) { search_.set_skin(s); invalidate(); }
+  /// Threads of the step loop; n <= 0 takes the OpenMP default (OMP_NUM_THREADS, else all cores).
   void set_num_threads(int n);
   int num_threads() const { return threads_; }
   void set_gravity(const Vec3& g) { gravity_ = g; invalidate(); }

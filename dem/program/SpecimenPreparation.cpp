@@ -97,8 +97,7 @@ PreparedSpecimen from_store(const CaseDescription &c)
   if (!same(stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure))
     mismatch("specimen/isotropic pressure", stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure);
   PreparedSpecimen out{std::move(stored.system), stored.record};
-  if (c.dem.threads > 0)
-    out.system.set_num_threads(int(c.dem.threads)); // results do not depend on the thread count
+  out.system.set_num_threads(int(c.dem.threads)); // 0: the OpenMP default; results do not depend on it
   out.system.set_local_damping(c.dem.local_damping);
   return out;
 }

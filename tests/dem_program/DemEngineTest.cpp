@@ -7,7 +7,9 @@
 #include "common/ProgramRunner.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -309,4 +311,15 @@ TEST(DemEngine, CaseFileLawMapsOntoTheCore)
   EXPECT_DOUBLE_EQ(s.time_step(), 0.15 * s.critical_time_step());
   EXPECT_DOUBLE_EQ(s.friction(), 0.4);
   EXPECT_THROW(DemEngine(DemSystem(), engine_parameters()), std::invalid_argument);
+}
+
+// `dem/threads = 0` (the default) must give the step loop the OpenMP default, not one thread.
+TEST(DemEngine, CaseThreadsZeroTakesTheOpenMPDefault)
+{
+  const Packing p = jittered_lattice(3, 0.01, 0.0, 0.05, 2000.0, 1);
+  DemParameters d;
+  d.threads = 0;
+  EXPECT_EQ(make_system(p, contact_parameters(), d).num_threads(), std::max(1, omp_get_max_threads()));
+  d.threads = 3;
+  EXPECT_EQ(make_system(p, contact_parameters(), d).num_threads(), 3);
 }
