@@ -283,18 +283,50 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
     ResponseSample s = engine_.measure();
     double tau = along(s.stress);
     if (tau <= b.tau_target && tau < tau_prev) {
-      // The target lies inside this interval: land the branch's last sample on it. Secant
-      // steps in time from the saved state (exact for elastic unloading, which is linear).
+      // The target lies inside this interval: land the branch's last sample on it. False
+      // position with the Illinois modification from the saved state, keeping the bracket
+      // [ta, tb] with f(ta) > 0 >= f(tb) (f = tau - target): exact in one step for elastic
+      // unloading (linear), and it still closes in on a noisy response (a large DEM
+      // specimen's), where the plain secant crept along the flat side. The sample lands on
+      // the bracket's far end, at or past the target, never short of it.
+      const double tol = 1e-9 * std::max(1.0, std::abs(b.tau_start));
       double ta = t, fa = tau_prev - b.tau_target, tb = t_next, fb = tau - b.tau_target;
-      for (int k = 0; k < 3 && std::abs(fb) > 1e-9 * std::max(1.0, std::abs(b.tau_start)) && fa != fb; ++k) {
-        const double tc = std::clamp(tb - fb * (tb - ta) / (fb - fa), t, t_next);
+      bool at_b = true; // the engine and s hold the landing state (tb, or a point on the target)
+      int side = 0;
+      for (int k = 0; k < 8 && fb < -tol && fa > 0.0; ++k) {
+        const double tc = std::clamp((ta * fb - tb * fa) / (fb - fa), ta, tb);
+        if (tc <= ta || tc >= tb)
+          break;
         engine_.restore(*before);
         engine_.advance_to(tc);
+        ResponseSample c = engine_.measure();
+        const double fc = along(c.stress) - b.tau_target;
+        if (fc <= tol && fc > 0.0) { // on the target, to the tolerance
+          s = std::move(c);
+          at_b = true;
+          break;
+        }
+        if (fc > 0.0) {
+          ta = tc;
+          fa = fc;
+          if (side > 0)
+            fb *= 0.5;
+          side = 1;
+          at_b = false;
+        } else {
+          tb = tc;
+          fb = fc;
+          s = std::move(c);
+          if (side < 0)
+            fa *= 0.5;
+          side = -1;
+          at_b = true;
+        }
+      }
+      if (!at_b) {
+        engine_.restore(*before);
+        engine_.advance_to(tb);
         s = engine_.measure();
-        ta = tb;
-        fa = fb;
-        tb = tc;
-        fb = along(s.stress) - b.tau_target;
       }
       tau = along(s.stress);
     }

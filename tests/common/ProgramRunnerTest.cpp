@@ -128,3 +128,45 @@ TEST(ProgramRunner, PeakBranchStartsAtThePeak)
   EXPECT_GE((engine.A - soft.tau_start) / engine.A, 0.2);
   EXPECT_GT(soft.residual_gamma, peak.residual_gamma);
 }
+
+namespace {
+/// Unloads linearly with slope K to a small floor (1e-3 tau_h) just above the target
+/// tau = 0, holds it over 2 % more unloading strain, then drops by tau_h: the response of a
+/// specimen whose stress sticks and then slips (a force chain giving way). Landing on the
+/// target cannot converge there: every secant step stays on the floor.
+class StickSlipUnloadingEngine : public HystereticShearEngine {
+public:
+  ResponseSample measure() override
+  {
+    ResponseSample s = HystereticShearEngine::measure();
+    const double g_hist = s.extras[0], g = gamma();
+    if (g < g_hist) {
+      const double tau_h = backbone(g_hist), x = (g_hist - g) * K / tau_h;
+      const double tau = x < 1.02 ? tau_h * std::max(1.0 - x, 1e-3) : tau_h * (1.0 - x) - tau_h;
+      s.stress = Tensor3::Identity() * -p0;
+      s.stress(0, 0) -= tau;
+      s.stress(2, 2) += tau;
+    }
+    return s;
+  }
+};
+} // namespace
+
+// The branch ends within one sample of crossing its target even when landing on the
+// target does not converge: it must not creep on in ever shorter intervals (it did, on
+// the 100 000-sphere specimen: hundreds of samples within one interval).
+TEST(ProgramRunner, UnloadingBranchEndsWhenTheLandingDoesNotConverge)
+{
+  StickSlipUnloadingEngine engine;
+  const Response r = ProgramRunner(shear_program({"gamma_max >= 0.03"}), engine).run();
+  ASSERT_EQ(r.branches.size(), 1u);
+  const BranchRecord &b = r.branches[0];
+  EXPECT_TRUE(b.reached_target);
+  // Unloading strain 1.02 tau_h/K = 0.0091 at gamma rate 0.1 1/s: 0.09 s, 10 samples of 0.01 s.
+  const auto path = r.path(1);
+  EXPECT_LE(path.size(), 12u);
+  const Tensor3 &last = path.back()->stress;
+  EXPECT_LT(last(2, 2) - last(0, 0), 0.0) << "the branch ends past its target (signed deviator)";
+  // The main path goes on to its end.
+  EXPECT_GE(gamma_max(r.path(0).back()->strain), 0.2);
+}
