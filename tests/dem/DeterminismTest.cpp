@@ -4,8 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 using namespace geocomp::dem;
 
 namespace {
@@ -23,21 +21,6 @@ void make_specimen(DemSystem& sys, int threads)
   sys.set_energy_tracking(true);
 }
 
-/// Positions, velocities and spins by particle id, as raw bits.
-std::vector<double> state(const DemSystem& sys)
-{
-  std::vector<double> s;
-  for (ParticleId id = 0; id < sys.n_particles(); ++id)
-    for (const Vec3& v : {sys.position(id), sys.velocity(id), sys.angular_velocity(id), sys.force(id)})
-      s.insert(s.end(), v.data(), v.data() + 3);
-  return s;
-}
-
-bool bitwise_equal(const std::vector<double>& a, const std::vector<double>& b)
-{
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
-
 }  // namespace
 
 TEST(Determinism, SameRunTwiceIsBitwiseIdentical)
@@ -48,7 +31,7 @@ TEST(Determinism, SameRunTwiceIsBitwiseIdentical)
   a.run(1500);
   b.run(1500);
   ASSERT_GT(a.n_touching_pairs(), 50u);
-  EXPECT_TRUE(bitwise_equal(state(a), state(b)));
+  EXPECT_TRUE(test::bitwise_equal(test::state_bits(a), test::state_bits(b)));
   EXPECT_EQ(a.energy().dissipated_friction, b.energy().dissipated_friction);
 }
 
@@ -60,7 +43,7 @@ TEST(Determinism, OneAndTwoThreadsAreBitwiseIdentical)
   a.run(1500);
   b.run(1500);
   ASSERT_GT(a.n_rebuilds(), 1u);
-  EXPECT_TRUE(bitwise_equal(state(a), state(b)));
+  EXPECT_TRUE(test::bitwise_equal(test::state_bits(a), test::state_bits(b)));
   const EnergyLedger ea = a.energy(), eb = b.energy();
   EXPECT_EQ(ea.dissipated_damping, eb.dissipated_damping);
   EXPECT_EQ(ea.wall_work, eb.wall_work);

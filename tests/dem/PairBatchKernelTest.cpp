@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <random>
 
 using namespace geocomp::dem;
@@ -73,24 +72,6 @@ void make_specimen(DemSystem& sys, LawVariant v, bool batched, int threads)
   sys.set_batched_pairs(batched);
 }
 
-std::vector<double> state(const DemSystem& sys)
-{
-  std::vector<double> s;
-  for (ParticleId id = 0; id < sys.n_particles(); ++id)
-    for (const Vec3& v : {sys.position(id), sys.velocity(id), sys.angular_velocity(id), sys.force(id)})
-      s.insert(s.end(), v.data(), v.data() + 3);
-  for (const ContactState& c : sys.export_contact_state()) {
-    s.push_back(c.overlap);
-    s.insert(s.end(), c.shear.data(), c.shear.data() + 3);
-  }
-  return s;
-}
-
-bool bitwise_equal(const std::vector<double>& a, const std::vector<double>& b)
-{
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
-
 void expect_same_run(LawVariant v, int threads)
 {
   DemSystem batched, scalar;
@@ -104,7 +85,7 @@ void expect_same_run(LawVariant v, int threads)
   const EnergyLedger eb = batched.energy(), es = scalar.energy();
   ASSERT_GT(es.dissipated_friction, 0.0);       // contacts slid
   ASSERT_GT(es.dissipated_damping, 0.0);
-  EXPECT_TRUE(bitwise_equal(state(batched), state(scalar)));
+  EXPECT_TRUE(test::bitwise_equal(test::state_bits(batched, true), test::state_bits(scalar, true)));
   EXPECT_EQ(eb.dissipated_damping, es.dissipated_damping);
   EXPECT_EQ(eb.dissipated_friction, es.dissipated_friction);
   EXPECT_EQ(eb.kinetic(), es.kinetic());

@@ -3,7 +3,9 @@
 
 #include "dem/DemSystem.h"
 
+#include <cstring>
 #include <random>
+#include <vector>
 
 namespace geocomp::dem::test {
 
@@ -31,6 +33,28 @@ inline void fill_box(DemSystem& sys, int per_edge, double R, double v_scale, uns
       }
   const double L = a * (per_edge - 1) + 2.0 * R;
   sys.add_box(Vec3::Zero(), Vec3::Constant(L), mu_wall);
+}
+
+/// Positions, velocities, spins and forces by particle id, then (with `contacts`) every
+/// contact's overlap and tangential history: a run's state as raw doubles.
+inline std::vector<double> state_bits(const DemSystem& sys, bool contacts = false)
+{
+  std::vector<double> s;
+  for (ParticleId id = 0; id < sys.n_particles(); ++id)
+    for (const Vec3& v : {sys.position(id), sys.velocity(id), sys.angular_velocity(id), sys.force(id)})
+      s.insert(s.end(), v.data(), v.data() + 3);
+  if (contacts)
+    for (const ContactState& c : sys.export_contact_state()) {
+      s.push_back(c.overlap);
+      s.insert(s.end(), c.shear.data(), c.shear.data() + 3);
+    }
+  return s;
+}
+
+/// Same length and the same bits (memcmp: -0.0 and NaN payloads count).
+inline bool bitwise_equal(const std::vector<double>& a, const std::vector<double>& b)
+{
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
 }  // namespace geocomp::dem::test
