@@ -82,6 +82,8 @@ void declare(ParameterHandler& prm)
   prm.declare_entry("output points", "100", Patterns::Integer(1, 100000), "Rows of the curve.");
   prm.declare_entry("lid weight", "0", Patterns::Double(0.0), "W_P of S4 eq. (22) [N].");
   prm.declare_entry("box weight", "0", Patterns::Double(0.0), "W_B of S4 eq. (22) [N].");
+  prm.declare_entry("lid mass", "1.0", Patterns::Double(0.0),
+                    "Inertia of the loaded lid during rest and shear [kg] (a dead load; its weight is W_P).");
   prm.leave_subsection();
   prm.enter_subsection("preparation");
   prm.declare_entry("growth start", "0.5", Patterns::Double(0.05, 1.0), "Placement size / full size (S4: 0.5).");
@@ -91,6 +93,14 @@ void declare(ParameterHandler& prm)
   prm.declare_entry("load tolerance", "0.02", Patterns::Double(0.0, 1.0),
                     "Loading ends when |P/P_target - 1| stays below this for 5 x 200 steps.");
   prm.declare_entry("load max time", "0.3", Patterns::Double(0.0), "DEM time limit of loading [s].");
+  prm.declare_entry("preparation friction", "0", Patterns::Double(0.0),
+                    "Contact and wall mu during growth and seating, standing for S4's vibration compaction "
+                    "(restored to the material frictions before the normal load).");
+  prm.declare_entry("seat stress", "10e3", Patterns::Double(0.0),
+                    "Lid stress of the seating compaction with the preparation friction [Pa] (the same for every normal stress).");
+  prm.declare_entry("rest ratio", "1e-4", Patterns::Double(0.0),
+                    "Shear starts when kinetic energy < this x elastic energy under the normal stress (and the load holds).");
+  prm.declare_entry("rest max time", "0.05", Patterns::Double(0.0), "DEM time limit of the rest phase [s].");
   prm.declare_entry("servo factor", "0.01", Patterns::Double(0.0, 1.0),
                     "Lid speed = factor (P_target - P) / (K dt), K the lid contact stiffness.");
   prm.leave_subsection();
@@ -175,6 +185,7 @@ ShearBoxCase read_case(const std::string& path)
   p.output_points = std::size_t(prm.get_integer("output points"));
   p.lid_weight = prm.get_double("lid weight");
   p.box_weight = prm.get_double("box weight");
+  p.lid_mass = prm.get_double("lid mass");
   prm.leave_subsection();
   prm.enter_subsection("preparation");
   p.growth_start = prm.get_double("growth start");
@@ -184,6 +195,10 @@ ShearBoxCase read_case(const std::string& path)
   p.load_tolerance = prm.get_double("load tolerance");
   p.load_max_time = prm.get_double("load max time");
   p.servo_factor = prm.get_double("servo factor");
+  p.prep_friction = prm.get_double("preparation friction");
+  p.seat_stress = prm.get_double("seat stress");
+  p.rest_ratio = prm.get_double("rest ratio");
+  p.rest_max_time = prm.get_double("rest max time");
   prm.leave_subsection();
   prm.enter_subsection("output");
   c.output_directory = prm.get("directory");
@@ -199,6 +214,7 @@ ShearBoxCase read_case(const std::string& path)
     fail("mass min", "expected 0 < mass min < mass max [g]");
   if (!(p.normal_stress > 0.0)) fail("normal stress", "expected > 0 [Pa] (compression positive)");
   if (!(p.shear_speed > 0.0)) fail("shear speed", "expected > 0 [m/s]");
+  if (!(p.lid_mass > 0.0)) fail("lid mass", "expected > 0 [kg]");
   if (!(p.youngs_modulus > 0.0) || !(p.modulus_scale > 0.0))
     fail("youngs modulus", "youngs modulus and modulus scale must be > 0");
   if (!(p.clumps.density > 0.0)) fail("density", "expected > 0 [kg/m^3]");
@@ -275,12 +291,12 @@ Command shear_box_command()
       const std::string base = (std::filesystem::path(dir) / stem).string();
       write_atomically(base + ".tsv", [&](std::ostream& out) {
         out << "# S4 direct shear " << sc.title << "; compression positive; lid_rise > 0 is dilation\n";
-        out << "U_m\tlid_rise_m\tF_N_N\tF_S_N\tarea_m2\tsigma_z_Pa\ttau_x_Pa\tmu_b\tinertial_number\ttime_s\n";
+        out << "U_m\tlid_rise_m\tF_N_N\tF_S_N\tarea_m2\tsigma_z_Pa\ttau_x_Pa\tmu_b\tinertial_number\ttime_s\trim_F_x_N\tbox_F_z_N\n";
         char buf[512];
         for (const auto& r : curve) {
-          std::snprintf(buf, sizeof buf, "%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6f\t%.3e\t%.6e\n", r.shear,
+          std::snprintf(buf, sizeof buf, "%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6f\t%.3e\t%.6e\t%.6e\t%.6e\n", r.shear,
                         r.lid_rise, r.normal_force, r.shear_force, r.area, r.sigma_z, r.tau_x, r.mu_b,
-                        r.inertial_number, r.time);
+                        r.inertial_number, r.time, r.rim_force, r.box_vertical_force);
           out << buf;
         }
       });
@@ -291,12 +307,18 @@ Command shear_box_command()
           << "clumps\t" << s.n_clumps << "\nspheres\t" << s.n_spheres << "\n"
           << "gap_mm\t" << s.gap * 1e3 << "\n"
           << "time_step_s\t" << s.time_step << "\n"
+          << "void_ratio_seated\t" << s.void_ratio_seated << "\n"
+          << "void_ratio_at_shear_start\t" << s.void_ratio << "\n"
+          << "kinetic_over_elastic_at_shear_start\t" << s.rest_kinetic_ratio << "\n"
+          << "lid_speed_at_shear_start_m_s\t" << s.rest_lid_speed << "\n"
           << "load_error_at_shear_start\t" << s.load_error << "\n"
           << "inertial_number\t" << s.inertial_number << "\n"
           << "peak_mu_b\t" << s.peak_mu_b << "\n"
           << "shear_at_peak_mm\t" << s.shear_at_peak * 1e3 << "\n"
+          << "rim_share_of_F_S_at_peak\t" << s.rim_share_at_peak << "\n"
           << "max_contraction_mm\t" << s.max_contraction * 1e3 << "\n"
           << "final_dilation_mm\t" << s.final_dilation * 1e3 << "\n"
+
           << "shear_steps\t" << s.steps << "\n"
           << "prepare_seconds\t" << s.prepare_seconds << "\nshear_seconds\t" << s.shear_seconds << "\n";
       write_atomically(base + "-summary.txt", [&](std::ostream& out) { out << sum.str(); });

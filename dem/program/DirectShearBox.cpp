@@ -43,6 +43,8 @@ DirectShearBox::DirectShearBox(const DirectShearParameters& p) : p_(p)
   if (!(p_.growth_start > 0.0 && p_.growth_start <= 1.0) || p_.growth_stages < 1)
     throw std::invalid_argument("DirectShearBox: growth start in (0, 1] and at least one stage");
   if (p_.output_points < 1) throw std::invalid_argument("DirectShearBox: at least one output point");
+  if (!(p_.lid_mass > 0.0)) throw std::invalid_argument("DirectShearBox: lid mass must be positive");
+  servo_target_ = target_load();
 }
 
 // @sect4{Walls}
@@ -138,7 +140,10 @@ void DirectShearBox::prepare(const Progress& progress)
   // Random placement at reduced size in the box column, up to three half-heights.
   const double z_top = 3.0 * H + gap_;
   auto clumps = place_clumps(shapes, Vec3(0, 0, 0), Vec3(L, B, z_top), p_.growth_start, p_.seed + 1);
+  solid_volume_ = 0.0;
+  for (const ClumpShape& s : shapes) solid_volume_ += s.mass / p_.clumps.density;
   build(clumps, z_top);
+  set_friction(true);
   // Growth in stages: scale every clump about its centroid, rebuild, settle.
   double scale = p_.growth_start;
   for (int k = 1; k <= p_.growth_stages; ++k) {
@@ -158,26 +163,71 @@ void DirectShearBox::prepare(const Progress& progress)
     }
     scale = next;
     build(members, z_top);
+    set_friction(true);
     sys_->run(p_.settle_steps);
     if (progress) progress("growth", double(k) / p_.growth_stages);
   }
-  // Normal load: lid just above the highest sphere, then the servo until the load holds.
+  // Seating: lid just above the highest sphere, compaction to seat_stress with the
+  // preparation friction (S4's vibration compaction), the same for every sigma_n.
   double z_max = 0.0;
   const ParticleStore& st = sys_->particles();
   for (std::size_t i = 0; i < st.size(); ++i) z_max = std::max(z_max, st.x[i].z() + st.radius[i]);
   const Vec3 lid_point = sys_->wall(lid()).point;
   sys_->set_wall_position(lid(), Vec3(lid_point.x(), lid_point.y(), z_max));
+  load_lid(std::min(p_.seat_stress, p_.normal_stress) * L * B, p_.load_max_time, progress);
+  info_.void_ratio_seated = void_ratio();
+  // Normal load with the full friction (S4: the load densifies the specimen further).
+  set_friction(false);
+  load_lid(target_load(), p_.load_max_time, progress);
+  // Rest under sigma_n with the dynamics of the shear (loaded lid, no local damping).
+  sys_->set_local_damping(0.0);
+  const std::size_t chunk = 200;
+  const double t_rest = sys_->time();
+  int held = 0;
+  sys_->set_wall_velocity(lid(), Vec3::Zero());
+  while (held < 5 && sys_->time() - t_rest < p_.rest_max_time) {
+    for (std::size_t s = 0; s < chunk; ++s) {
+      drive_lid();
+      sys_->step();
+    }
+    const EnergyLedger e = sys_->energy();
+    info_.rest_kinetic_ratio = e.kinetic() / std::max(e.elastic(), 1e-300);
+    info_.load_error = std::abs(sys_->wall(lid()).force.z() / target_load() - 1.0);
+    held = info_.rest_kinetic_ratio < p_.rest_ratio && info_.load_error < p_.load_tolerance ? held + 1 : 0;
+    if (progress) progress("rest", (sys_->time() - t_rest) / p_.rest_max_time);
+  }
+  info_.rest_lid_speed = std::abs(sys_->wall(lid()).velocity.z());
+  info_.void_ratio = void_ratio();
+  info_.time_step = dt_;
+  info_.prepare_seconds = seconds_since(t0);
+}
+
+void DirectShearBox::load_lid(double load, double max_time, const Progress& progress)
+{
+  servo_target_ = load;
   const std::size_t chunk = 200;
   const double t_load = sys_->time();
   int held = 0;  // consecutive chunks ending within the load tolerance
-  while (held < 5 && sys_->time() - t_load < p_.load_max_time) {
+  while (held < 5 && sys_->time() - t_load < max_time) {
     run_servo(chunk);
-    info_.load_error = std::abs(sys_->wall(lid()).force.z() / target_load() - 1.0);
+    info_.load_error = std::abs(sys_->wall(lid()).force.z() / load - 1.0);
     held = info_.load_error < p_.load_tolerance ? held + 1 : 0;
-    if (progress) progress("load", (sys_->time() - t_load) / p_.load_max_time);
+    if (progress) progress("load", (sys_->time() - t_load) / max_time);
   }
-  info_.time_step = dt_;
-  info_.prepare_seconds = seconds_since(t0);
+}
+
+void DirectShearBox::set_friction(bool preparation)
+{
+  sys_->set_friction(preparation ? p_.prep_friction : p_.mu_contact);
+  const double side = preparation ? p_.prep_friction : p_.mu_side;
+  const double grip = preparation ? p_.prep_friction : p_.mu_lid;
+  for (std::size_t w : lower_) sys_->set_wall_friction(w, w == lower_.front() ? grip : side);
+  for (std::size_t w : upper_) sys_->set_wall_friction(w, w == lid() ? grip : side);
+}
+
+double DirectShearBox::void_ratio() const
+{
+  return p_.length * p_.width * sys_->wall(lid()).point.z() / solid_volume_ - 1.0;
 }
 
 void DirectShearBox::servo_lid()
@@ -185,9 +235,23 @@ void DirectShearBox::servo_lid()
   const PlaneWall& w = sys_->wall(lid());
   const double P = w.force.z();  // particles push the lid up: compression positive
   const double K = std::max(w.stiffness, 1e-300);
-  const double v = p_.servo_factor * (target_load() - P) / (K * dt_);
+  const double v = p_.servo_factor * (servo_target_ - P) / (K * dt_);
   const double vz = -std::clamp(v, -p_.servo_max_speed, p_.servo_max_speed);
   sys_->set_wall_velocity(lid(), Vec3(0.0, 0.0, vz));
+}
+
+// The loaded lid during rest and shear: a rigid plate that moves vertically under the
+// particles' force and the applied load (a dead load, as in S4's test),
+//   m_lid dv/dt = F_lid - P,   P = sigma_n L B,
+// m_lid an inertia only (the weights enter F_N through W_P, W_B as in S4 eq. 22). It follows
+// a dilating specimen with the error m_lid a, negligible here, where the velocity servo of
+// the loading lags by (dilation rate) K dt / servo_factor (30-40 % of P at 100 kPa).
+// Semi-implicit Euler with the step's forces; stable for dt << sqrt(m_lid/K) (~3e-4 s here).
+void DirectShearBox::drive_lid()
+{
+  const double f_lid = sys_->wall(lid()).force.z();
+  const double v_lid = sys_->wall(lid()).velocity.z() + dt_ * (f_lid - servo_target_) / p_.lid_mass;
+  sys_->set_wall_velocity(lid(), Vec3(0.0, 0.0, v_lid));
 }
 
 void DirectShearBox::run_servo(std::size_t steps)
@@ -206,7 +270,11 @@ ShearRecord DirectShearBox::measure(double U) const
   r.time = sys_->time();
   r.lid_rise = sys_->wall(lid()).point.z() - lid_start_;
   r.normal_force = sys_->wall(lid()).force.z() + p_.lid_weight + p_.box_weight;  // S4 eq. (22)
-  for (std::size_t w : upper_) r.shear_force += sys_->wall(w).force.x();        // S4 eq. (22)
+  // S4 eq. (22): F_S over the N_wall = 5 walls of S4's upper box, the lid and the four
+  // sides; the rim plate (our stand-in for the box frame) is reported on its own.
+  for (std::size_t j = 0; j + 1 < upper_.size(); ++j) r.shear_force += sys_->wall(upper_[j]).force.x();
+  r.rim_force = sys_->wall(upper_.back()).force.x();
+  for (std::size_t j = 1; j + 1 < upper_.size(); ++j) r.box_vertical_force += sys_->wall(upper_[j]).force.z();
   r.area = corrected_area(p_.length, p_.width, U);                                // S4 eq. (23)
   r.sigma_z = r.normal_force / r.area;                                             // S4 eq. (23)
   r.tau_x = r.shear_force / r.area;                                                // S4 eq. (23)
@@ -228,7 +296,7 @@ std::vector<ShearRecord> DirectShearBox::shear(const Progress& progress)
   std::vector<ShearRecord> curve{measure(0.0)};
   const double t_start = sys_->time();
   for (std::uint64_t s = 1; s <= total; ++s) {
-    servo_lid();
+    drive_lid();
     sys_->step();
     if (s % every == 0 || s == total) {
       curve.push_back(measure(std::min(p_.max_shear, p_.shear_speed * (sys_->time() - t_start))));
@@ -248,6 +316,7 @@ ShearSummary DirectShearBox::summary(const std::vector<ShearRecord>& curve) cons
     if (r.mu_b > s.peak_mu_b) {
       s.peak_mu_b = r.mu_b;
       s.shear_at_peak = r.shear;
+      s.rim_share_at_peak = r.rim_force / r.shear_force;
     }
     s.max_contraction = std::max(s.max_contraction, -r.lid_rise);
   }

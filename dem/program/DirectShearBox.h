@@ -11,20 +11,31 @@
 // frame outside its footprint (lower: $z = H$, $x \in [U - F, U]$; upper: $z = H + g$,
 // $x \in [L, L + F]$, F = max shear + L/10), standing for the thick frame of a real box.
 // The floor is an unbounded plane moving with the lower box. Choice: the upper box is
-// fixed (horizontally and vertically); the lid (friction mu_lid) is servo-controlled to the
-// normal load $P = \sigma_n L B$, so $F_N = P + W_P + W_B$ (S4 eq. 22) with the lid and box
-// weights W_P, W_B given as parameters (0 by default: massless walls).
+// fixed (horizontally and vertically; S4's is free vertically, but a free massless box
+// rises with the dilating specimen, opens the gap wider than the grains and lets them
+// leak). The side-wall friction of a dilating specimen then presses it down beyond F_N;
+// that force is recorded (box_vertical_force), and so is the rim's x force. The lid
+// (friction mu_lid) is lowered by a velocity servo to the load and is a loaded rigid plate
+// during rest and shear (drive_lid): $P = \sigma_n L B$, $F_N = P + W_P + W_B$ (S4 eq. 22)
+// with the lid and box weights W_P, W_B given as parameters (0 by default).
 // Measurements (S4 eq. 22-24), compression positive in the reports:
-//   $F_S = \sum_{upper\ walls} (N_x + S_x)$ (sum of the x forces on the lid, the four upper
-//   sides and the upper rim), $A = B(L - U)$, $\sigma_z = F_N/A$, $\tau_x = F_S/A$,
-//   $\mu_b = F_S/F_N$; lid displacement from the start of shearing (up = dilation);
-//   inertial number $I = \dot\gamma \bar d \sqrt{\rho/\sigma_n}$ with
-//   $\dot\gamma = v/(10\bar d)$ (a shear band ten mean diameters thick).
+//   $F_S = \sum_{upper\ walls} (N_x + S_x)$ over S4's N_wall = 5 walls (the lid and the
+//   four upper sides; the x force on the upper rim is recorded apart), $A = B(L - U)$,
+//   $\sigma_z = F_N/A$, $\tau_x = F_S/A$, $\mu_b = F_S/F_N$; lid displacement from the
+//   start of shearing (up = dilation); inertial number $I = \dot\gamma \bar d \sqrt{\rho/\sigma_n}$
+//   with $\dot\gamma = v/(10\bar d)$ (a shear band ten mean diameters thick).
 // Preparation (S4): clumps placed at random at `growth_start` of their size, grown in
 // `growth_stages` uniform stages to full size (each stage rebuilds the system with the
 // members scaled about each clump's centroid, velocities zeroed, then settles under
-// gravity with local damping), then the lid is lowered by the servo until the load holds
-// and the specimen is at rest, then the lower box moves at constant speed.
+// gravity with local damping). Growth and a first compaction under the lid to the
+// seating stress `seat_stress` run with the friction `prep_friction` on every contact and
+// wall: S4's specimens are densified by vibration before loading, and S4's DEM aims at
+// their void ratio (0.46); grown with the full friction 0.7 the clumps jam at e ~ 1.0,
+// a loose specimen that only contracts. The seating state is the same for every normal
+// stress. Then the friction is restored, the servo loads the lid to sigma_n, and the
+// specimen is left under the loaded lid without local damping (as in shear) until it is
+// at rest: kinetic energy < rest_ratio x elastic energy and the load within the
+// tolerance, for 5 x 200 steps. Then the lower box moves at constant speed.
 // Rate: S4's 3 mm/min is unaffordable; the speed is chosen so that I < 1e-3 (quasi-static)
 // and the modulus may be scaled (modulus_scale) to lengthen the Rayleigh time step.
 #pragma once
@@ -64,6 +75,7 @@ struct DirectShearParameters
   double normal_stress = 100e3;    ///< sigma_n [Pa], compression positive
   double lid_weight = 0.0;         ///< W_P [N]
   double box_weight = 0.0;         ///< W_B [N]
+  double lid_mass = 1.0;           ///< [kg] inertia of the loaded lid during rest and shear
   double shear_speed = 0.05;       ///< [m/s] of the lower box
   double max_shear = 0.015;        ///< [m]
   std::size_t output_points = 100;
@@ -77,6 +89,10 @@ struct DirectShearParameters
   int growth_stages = 16;
   std::size_t settle_steps = 1500; ///< steps after each growth stage
   double local_damping = 0.5;      ///< during preparation only
+  double prep_friction = 0.0;      ///< contact and wall mu during growth and seating (vibration)
+  double seat_stress = 10e3;       ///< [Pa] lid stress of the seating compaction (same for all sigma_n)
+  double rest_ratio = 1e-4;        ///< at rest before shear: E_kin < rest_ratio * E_elastic
+  double rest_max_time = 0.05;     ///< [s] of DEM time for coming to rest under sigma_n
   std::uint64_t seed = 1;
 };
 
@@ -93,6 +109,9 @@ struct ShearRecord
   double mu_b = 0.0;
   double inertial_number = 0.0;
   double time = 0.0;          ///< [s] DEM time
+  double rim_force = 0.0;     ///< [N] x force on the upper rim plate (not in F_S, S4 eq. 22)
+  double box_vertical_force = 0.0;  ///< [N] particles' upward (friction) force on the four upper
+                                    ///< sides: the fixed box presses the upper specimen down by it
 };
 
 struct ShearSummary
@@ -106,6 +125,11 @@ struct ShearSummary
   double time_step = 0.0;
   double gap = 0.0;
   double load_error = 0.0;       ///< |P/P_target - 1| at the end of loading
+  double void_ratio_seated = 0.0;  ///< e after the seating compaction (column floor..lid)
+  double void_ratio = 0.0;         ///< e at the start of shear
+  double rest_kinetic_ratio = 0.0; ///< E_kin / E_elastic at the start of shear
+  double rest_lid_speed = 0.0;     ///< [m/s] |lid speed| at the start of shear
+  double rim_share_at_peak = 0.0;  ///< upper-rim x force / F_S at the peak of mu_b
   double prepare_seconds = 0.0, shear_seconds = 0.0;
   std::uint64_t steps = 0;
 };
@@ -138,18 +162,28 @@ public:
   double target_load() const { return p_.normal_stress * p_.length * p_.width; }
   /// One servo update of the lid velocity towards the target load.
   void servo_lid();
+  /// Void ratio of the column floor..lid: e = L B z_lid / V_solid - 1 (gap included).
+  double void_ratio() const;
+  /// One update of the vertical speed of the loaded lid (rigid plate under the particles'
+  /// force and the load P; used for rest and shear).
+  void drive_lid();
   /// Runs `steps` steps with the lid servo on.
   void run_servo(std::size_t steps);
 
 private:
   void build(const std::vector<std::vector<ClumpMember>>& clumps, double lid_height);
   std::vector<std::vector<ClumpMember>> clump_members() const;
+  void set_friction(bool preparation);
+  /// Servo to `load` [N] until it holds within load_tolerance for 5 chunks (or max_time).
+  void load_lid(double load, double max_time, const Progress& progress);
 
   DirectShearParameters p_;
   std::unique_ptr<DemSystem> sys_;
   std::vector<std::size_t> upper_, lower_;
   double gap_ = 0.0, d_mean_ = 0.0, dt_ = 0.0, r_min_ = 0.0;
   double lid_start_ = 0.0;
+  double servo_target_ = 0.0;  ///< [N] the servo's current target
+  double solid_volume_ = 0.0;  ///< [m^3] sum of clump masses / density
   ShearSummary info_;
 };
 

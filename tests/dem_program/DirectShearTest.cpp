@@ -67,15 +67,17 @@ TEST(DirectShear, ForceAccountingMatchesTheWallForces)
   DirectShearBox& box = prepared().box;
   const DemSystem& sys = box.system();
   const ShearRecord r = box.measure(0.001);
+  // S4 eq. (22): the lid and the four sides (N_wall = 5); the rim (last) is not in F_S.
+  const auto& up = box.upper_walls();
+  ASSERT_EQ(up.size(), 6u);
   double fs = 0.0;
-  for (std::size_t w : box.upper_walls()) fs += sys.wall(w).force.x();
+  for (std::size_t j = 0; j < 5; ++j) fs += sys.wall(up[j]).force.x();
   // Independently: the x forces of the wall contacts of the upper walls (ContactRecord
   // holds the force on the particle; the wall receives the opposite).
   double fs_contacts = 0.0, fn_contacts = 0.0;
-  const auto& up = box.upper_walls();
   for (const ContactRecord& c : sys.contacts()) {
     if (!c.wall) continue;
-    if (std::find(up.begin(), up.end(), std::size_t(c.i)) != up.end()) fs_contacts -= c.force.x();
+    if (std::find(up.begin(), up.end() - 1, std::size_t(c.i)) != up.end() - 1) fs_contacts -= c.force.x();
     if (c.i == box.lid()) fn_contacts -= c.force.z();
   }
   EXPECT_DOUBLE_EQ(r.shear_force, fs);
@@ -98,4 +100,33 @@ TEST(DirectShear, ShortShearContractsThenDilates)
   EXPECT_GT(s.peak_mu_b, 0.2);
   EXPECT_LT(s.inertial_number, 1e-3);
   for (const ShearRecord& r : curve) EXPECT_NEAR(r.sigma_z * r.area, r.normal_force, 1e-9 * r.normal_force);
+}
+
+// S4's normal-stress trends (section 3.3, Fig. 5 and 7a) on one dense specimen (seated
+// without friction, S4's vibration compaction, then loaded): sheared at 100 and 300 kPa,
+// it first contracts more and then dilates less at 300 kPa, and its effective friction
+// mu_b (S4 eq. 24) peaks lower there.
+TEST(DirectShear, LowNormalStressDilatesMoreContractsLessAndHasHigherMuB)
+{
+  auto run = [](double normal_stress) {
+    DirectShearParameters p = small_box();
+    p.normal_stress = normal_stress;
+    DirectShearBox box(p);
+    box.prepare();
+    return box.summary(box.shear());
+  };
+  const ShearSummary lo = run(100e3), hi = run(300e3);
+  // The same seated specimen for both loads, denser than a frictional growth (e ~ 1.0 in
+  // the S4 cases, a loose specimen that only contracts; S4: e = 0.46).
+  EXPECT_DOUBLE_EQ(lo.void_ratio_seated, hi.void_ratio_seated);
+  EXPECT_LT(lo.void_ratio_seated, 0.9);
+  // At rest under sigma_n before the shear.
+  EXPECT_LT(lo.rest_kinetic_ratio, 1e-4);
+  EXPECT_LT(hi.rest_kinetic_ratio, 1e-4);
+  EXPECT_GT(hi.max_contraction, lo.max_contraction);  // contraction grows with the load
+  EXPECT_GT(hi.final_dilation, 0.0);                   // net dilation at both loads
+  EXPECT_GT(lo.final_dilation, hi.final_dilation);     // more dilation at low load
+  EXPECT_GT(lo.peak_mu_b, hi.peak_mu_b);               // mu_b falls with normal stress
+  EXPECT_LT(hi.inertial_number, lo.inertial_number);
+  EXPECT_LT(lo.inertial_number, 1e-3);
 }
