@@ -97,7 +97,7 @@ class SnapshotRecorder {
 public:
   SnapshotRecorder(dem::DemEngine &engine, const CaseDescription &c, const fs::path &dir)
     : engine_(engine), file_(dir / dem_fields_file), n_(std::max(1u, c.dem.snapshots)),
-      kind_(compare::curve_kind_for(c.program))
+      kind_(compare::curve_kind_for(c.program)), sample_interval_(c.program.sample_interval)
   {
     fs::create_directories(dir);
   }
@@ -116,7 +116,12 @@ public:
     if (!fs::exists(file_))
       return;
     std::vector<dem::ParticleFields> kept = dem::read_snapshots(file_);
-    const auto later = std::find_if(kept.begin(), kept.end(), [time](const auto &f) { return f.time > time; });
+    // Snapshots are taken at samples, a sample interval apart; the engine's clock and the
+    // runner's may differ in the last bits (0.035000000000000031 against 0.035), so "later"
+    // means more than half an interval later: the snapshot at the checkpoint's own sample stays.
+    const double tolerance = 0.5 * sample_interval_;
+    const auto later = std::find_if(kept.begin(), kept.end(),
+                                    [&](const auto &f) { return f.time > time + tolerance; });
     if (later == kept.end())
       return;
     kept.erase(later, kept.end());
@@ -142,6 +147,7 @@ private:
   fs::path file_;
   unsigned int n_, next_ = 0;
   compare::CurveKind kind_;
+  double sample_interval_;
 };
 
 /// The DEM side of the report from the particle snapshots: localization onset and band
