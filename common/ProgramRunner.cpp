@@ -275,6 +275,7 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
 
   double t = origin.time;
   double tau_prev = b.tau_start;
+  const double tol = 1e-9 * std::max(1.0, std::abs(b.tau_start)); // "on the target
   const double t_end = origin.time + stage.max_duration;
   while (true) {
     const double t_next = std::min(t + program_.sample_interval, t_end);
@@ -289,7 +290,6 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
       // unloading (linear), and it still closes in on a noisy response (a large DEM
       // specimen's), where the plain secant crept along the flat side. The sample lands on
       // the bracket's far end, at or past the target, never short of it.
-      const double tol = 1e-9 * std::max(1.0, std::abs(b.tau_start));
       double ta = t, fa = tau_prev - b.tau_target, tb = t_next, fb = tau - b.tau_target;
       bool at_b = true; // the engine and s hold the landing state (tb, or a point on the target)
       int side = 0;
@@ -335,7 +335,7 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
     const double fraction =
       b.tau_start > b.tau_target ? (b.tau_start - tau) / (b.tau_start - b.tau_target) : 1.0;
     record(s, stage_index, b.id, fraction);
-    if (tau <= b.tau_target + 1e-9 * std::max(1.0, std::abs(b.tau_start))) {
+    if (tau <= b.tau_target + tol) {
       b.reached_target = true;
       break;
     }

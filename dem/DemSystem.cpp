@@ -457,42 +457,37 @@ double DemSystem::drift_overdamped(double dt)
 
 // @sect4{FIRE velocity control (preparation)}
 
-double DemSystem::power() const
+double DemSystem::fire_velocities(double alpha)
 {
-  double sum = 0.0;  // serial, fixed order: a pass over the particles costs little next to a step
-  for (std::size_t k = 0; k < store_.size(); ++k)
-    if (store_.inv_mass[k] != 0.0) sum += store_.force[k].dot(store_.v[k]) + store_.torque[k].dot(store_.omega[k]);
-  return sum;
-}
-
-void DemSystem::fire_mix(double alpha)
-{
+  // One serial pass in storage order (fixed: the same bits for any thread count) for the
+  // power and the four global norms, then the update.
   const std::size_t n = store_.size();
-  double v2 = 0.0, f2 = 0.0, w2 = 0.0, t2 = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {  // serial: one pass, fixed order
+  double power = 0.0, v2 = 0.0, f2 = 0.0, w2 = 0.0, t2 = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
     if (store_.inv_mass[k] == 0.0) continue;
+    power += store_.force[k].dot(store_.v[k]) + store_.torque[k].dot(store_.omega[k]);
     v2 += store_.v[k].squaredNorm();
     f2 += store_.force[k].squaredNorm();
     w2 += store_.omega[k].squaredNorm();
     t2 += store_.torque[k].squaredNorm();
   }
-  const double sv = f2 > 0.0 ? alpha * std::sqrt(v2 / f2) : 0.0;  // alpha |v| / |F|
-  const double sw = t2 > 0.0 ? alpha * std::sqrt(w2 / t2) : 0.0;
+  // P > 0: v <- (1 - alpha) v + alpha |v| F/|F|; otherwise every particle stops.
+  const bool downhill = power > 0.0;
+  const double keep = downhill ? 1.0 - alpha : 0.0;
+  const double sv = downhill && f2 > 0.0 ? alpha * std::sqrt(v2 / f2) : 0.0;
+  const double sw = downhill && t2 > 0.0 ? alpha * std::sqrt(w2 / t2) : 0.0;
 #pragma omp parallel for schedule(static) num_threads(threads_)
   for (std::int64_t k = 0; k < std::int64_t(n); ++k) {
     if (store_.inv_mass[k] == 0.0) continue;
-    store_.v[k] = (1.0 - alpha) * store_.v[k] + sv * store_.force[k];
-    store_.omega[k] = (1.0 - alpha) * store_.omega[k] + sw * store_.torque[k];
+    if (!downhill) {
+      store_.v[k].setZero();
+      store_.omega[k].setZero();
+      continue;
+    }
+    store_.v[k] = keep * store_.v[k] + sv * store_.force[k];
+    store_.omega[k] = keep * store_.omega[k] + sw * store_.torque[k];
   }
-}
-
-void DemSystem::stop_particles()
-{
-  for (std::size_t k = 0; k < store_.size(); ++k) {
-    if (store_.inv_mass[k] == 0.0) continue;
-    store_.v[k].setZero();
-    store_.omega[k].setZero();
-  }
+  return power;
 }
 
 void DemSystem::step()

@@ -195,14 +195,11 @@ public:
   /// is counted as dissipated_local. beta = 0 (default): velocity Verlet.
   void set_overdamped(double beta);
   double overdamped() const { return overdamped_; }
-  /// FIRE (Bitzek et al. 2006, DEM-NOTES section 8), the velocity part: the power
-  /// $P = \sum F\cdot v + T\cdot\omega$ of the dynamic particles (summed in storage order).
-  double power() const;
-  /// FIRE mixing: $v \leftarrow (1-\alpha)v + \alpha|v|\hat F$ with global norms over the dynamic
-  /// particles (and the same for $\omega$ and the torques).
-  void fire_mix(double alpha);
-  /// Sets every dynamic particle's velocity and spin to zero (FIRE's reaction to P <= 0).
-  void stop_particles();
+  /// FIRE (Bitzek et al. 2006, DEM-NOTES section 8), the velocity part, over the dynamic
+  /// particles: the power $P = \sum F\cdot v + T\cdot\omega$ (summed in storage order); if
+  /// P > 0, $v \leftarrow (1-\alpha)v + \alpha|v|\hat F$ with global norms (the same for
+  /// $\omega$ and the torques), otherwise every velocity and spin is set to zero. Returns P.
+  double fire_velocities(double alpha);
   /// Accumulate dissipated energy every step (small cost; off by default).
   void set_energy_tracking(bool on) { track_energy_ = on; }
   /// Evaluate the pairs of the linear spring-dashpot law four at a time with the AVX2

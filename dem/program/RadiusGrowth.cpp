@@ -181,14 +181,12 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
     } else {
       for (std::uint64_t n = 0; n < k.check_steps; ++n) {
         system.step();
-        if (system.power() > 0.0) {
-          system.fire_mix(alpha);
+        if (system.fire_velocities(alpha) > 0.0) {
           if (++positive > k.fire_delay) {
             dt = std::min(dt * k.fire_dt_growth, k.fire_dt_max * dt0);
             alpha *= k.fire_alpha_decay;
           }
-        } else {
-          system.stop_particles();
+        } else {  // the particles were stopped
           dt *= 0.5;
           alpha = k.fire_alpha;
           positive = 0;

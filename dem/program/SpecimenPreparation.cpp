@@ -51,7 +51,6 @@ ContactParameters frictionless(const ContactParameters &c)
   return f;
 }
 
-/// Sets the packing dynamics: first-order (Aristotelian) or Newtonian with damping.
 /// The rest criteria of the frictionless phase, with FIRE when the case asks for it.
 RestCriteria frictionless_rest(const CaseDescription &c, const PreparationCriteria &k)
 {
@@ -60,6 +59,7 @@ RestCriteria frictionless_rest(const CaseDescription &c, const PreparationCriter
   return r;
 }
 
+/// Sets the packing dynamics: first-order (Aristotelian) or Newtonian with damping.
 void set_packing_dynamics(DemSystem &s, bool aristotelian, const PreparationCriteria &k)
 {
   if (aristotelian) {
