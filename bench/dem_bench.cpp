@@ -3,7 +3,8 @@
 // Why it exists: the engine's speed is only meaningful next to an established engine
 // running the same specimen, law and loading on the same machine. This program runs
 // ../shared/bench (README.md, params.sh) exactly: monodisperse dense packing read from
-// bench_N.xyzr (box [0, L]^3 in the header), linear spring-dashpot with k_n = 1e6 N/m,
+// bench_N.xyzr (box [0, L]^3 in the header; bench/tile-packing.sh writes a box
+// [lo,hi]x[lo,hi]x[lo,hi]), linear spring-dashpot with k_n = 1e6 N/m,
 // k_t = 285714.2857 N/m, c_n = gamma_n m* (gamma_n = 4512.4128 1/s, no clamp, as
 // LIGGGHTS hooke/stiffness), no tangential damping, Coulomb mu = 0.4 between particles,
 // six frictionless walls with the same normal law moving inward at 0.01 m/s,
@@ -46,12 +47,27 @@ int main(int argc, char** argv)
   }
   std::string header;
   std::getline(in, header);
-  const auto lb = header.find('['), comma = header.find(',', lb), rb = header.find(']', lb);
-  if (lb == std::string::npos || comma == std::string::npos || rb == std::string::npos) {
-    std::cerr << "no box [0,L]^3 in header of " << path << "\n";
-    return 1;
+  // "box [lo,hi]^3" (the shared data) or "box [lo,hi]x[lo,hi]x[lo,hi]" (bench/tile-packing.sh).
+  Vec3 box_lo, box_hi;
+  int axes = 0;
+  for (std::size_t at = header.find("box"); at != std::string::npos && axes < 3; ++axes) {
+    const auto lb = header.find('[', at), comma = header.find(',', lb), rb = header.find(']', lb);
+    if (lb == std::string::npos || comma == std::string::npos || rb == std::string::npos) break;
+    box_lo[axes] = std::stod(header.substr(lb + 1, comma - lb - 1));
+    box_hi[axes] = std::stod(header.substr(comma + 1, rb - comma - 1));
+    at = rb + 1;
+    if (axes == 0 && header.compare(at, 2, "^3") == 0) {
+      box_lo.setConstant(box_lo[0]);
+      box_hi.setConstant(box_hi[0]);
+      axes = 2;
+    } else if (axes < 2 && (at >= header.size() || header[at] != 'x')) {
+      break;
+    }
   }
-  const double L = std::stod(header.substr(comma + 1, rb - comma - 1));
+  if (axes != 3) {
+    std::cerr << path << ": header: expected \"box [lo,hi]^3\" or \"box [lo,hi]x[lo,hi]x[lo,hi]\"\n";
+    return 2;
+  }
 
   DemSystem sys;
   LinearNormal::Parameters np;
@@ -87,7 +103,7 @@ int main(int argc, char** argv)
   sys.reserve(centres.size());
   for (std::size_t k = 0; k < centres.size(); ++k) sys.add_sphere(centres[k], radii[k], rho);
   const std::size_t n = sys.n_particles();
-  sys.add_box(Vec3::Zero(), Vec3::Constant(L), 0.0);
+  sys.add_box(box_lo, box_hi, 0.0);
   for (std::size_t w = 0; w < 6; ++w) sys.set_wall_velocity(w, v_wall * sys.wall(w).normal);
   sys.set_time_step(dt);
   sys.set_skin(skin);

@@ -123,6 +123,24 @@ void NeighbourSearch::archive(const ParticleStore& store, const ContactLists& li
   std::sort(wall_archive_.begin(), wall_archive_.end());
 }
 
+void NeighbourSearch::index_pair_archive()
+{
+  // The archive is sorted by key = (lo << 32) | hi: each lower id is one run.
+  const std::size_t n_ids = pair_archive_.empty() ? 0 : std::size_t(pair_archive_.back().key >> 32) + 1;
+  pair_archive_start_.assign(n_ids + 1, 0);
+  for (const HistoryEntry& e : pair_archive_) ++pair_archive_start_[(e.key >> 32) + 1];
+  for (std::size_t k = 0; k < n_ids; ++k) pair_archive_start_[k + 1] += pair_archive_start_[k];
+}
+
+const HistoryEntry* NeighbourSearch::find_pair_history(std::uint64_t key) const
+{
+  const std::size_t lo = std::size_t(key >> 32);
+  if (lo + 1 >= pair_archive_start_.size()) return nullptr;
+  for (std::uint32_t e = pair_archive_start_[lo]; e < pair_archive_start_[lo + 1]; ++e)
+    if (pair_archive_[e].key == key) return &pair_archive_[e];
+  return nullptr;
+}
+
 bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>& walls, ContactLists& lists,
                               int threads)
 {
@@ -130,6 +148,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   // (1) Histories by stable key, before any index changes.
   if (!imported_) archive(store, lists);
   imported_ = false;
+  index_pair_archive();
   if (!memory_imported_) archive_memory(store, lists);
   memory_imported_ = false;
   const bool memory = lists.with_memory;
@@ -164,11 +183,18 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
     const double range = R[a] + R[b] + reach_ + skin_;
     return (x[b] - x[a]).squaredNorm() < range * range;
   };
+  // Storage in cell order (sorting on): only the cells after a's can hold b > a, and
+  // they are met in the same order as in the full stencil, so the slots are the same.
+  const bool cell_order = sort_;
+  const auto for_each_candidate = [&](Index a, auto&& f) {
+    if (cell_order) grid_.for_each_after(a, f);
+    else grid_.for_each_near(grid_.cell_of_particle(a), f);
+  };
   count_.assign(n + 1, 0);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t a = 0; a < std::int64_t(n); ++a) {
     std::uint32_t c = 0;
-    grid_.for_each_near(grid_.cell_of_particle(Index(a)), [&](Index b) { c += listed(Index(a), b) ? 1u : 0u; });
+    for_each_candidate(Index(a), [&](Index b) { c += listed(Index(a), b) ? 1u : 0u; });
     count_[a + 1] = c;
   }
   for (std::size_t a = 0; a < n; ++a) count_[a + 1] += count_[a];
@@ -180,14 +206,14 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t a = 0; a < std::int64_t(n); ++a) {
     std::uint32_t k = count_[a];
-    grid_.for_each_near(grid_.cell_of_particle(Index(a)), [&](Index b) {
+    for_each_candidate(Index(a), [&](Index b) {
       if (!listed(Index(a), b)) return;
       PairSlot& s = lists.pairs[k++];
       const bool keep = id[a] < id[b];  // canonical order: id_i < id_j
       s.i = keep ? Index(a) : b;
       s.j = keep ? b : Index(a);
       // (4) Carry the history over.
-      const HistoryEntry* h = find_history(pair_archive_, pair_key(id[a], id[b]));
+      const HistoryEntry* h = find_pair_history(pair_key(id[a], id[b]));
       s.overlap = h ? h->overlap : 0.0;
       s.shear = h ? h->shear : Vec3::Zero();
       s.force.setZero();
@@ -250,7 +276,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
 std::size_t NeighbourSearch::memory_bytes() const
 {
   return grid_.memory_bytes() + (x_ref_.capacity() + wall_ref_.capacity()) * sizeof(Vec3) +
-         count_.capacity() * sizeof(std::uint32_t) +
+         (count_.capacity() + pair_archive_start_.capacity()) * sizeof(std::uint32_t) +
          (pair_archive_.capacity() + wall_archive_.capacity()) * sizeof(HistoryEntry) +
          (pair_memory_archive_.capacity() + wall_memory_archive_.capacity()) * sizeof(MemoryEntry) +
          (broken_pairs_.capacity() + broken_walls_.capacity()) * sizeof(std::uint64_t);

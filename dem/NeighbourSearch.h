@@ -68,6 +68,12 @@ public:
 private:
   void archive(const ParticleStore& store, const ContactLists& lists);
   void archive_memory(const ParticleStore& store, const ContactLists& lists);
+  /// Indexes the sorted pair archive by the lower id of its keys (pair_archive_start_).
+  void index_pair_archive();
+  /// The archived history of a particle pair, or null: a scan of the few entries that
+  /// share the pair's lower id, in place of a binary search of the whole archive (whose
+  /// probes miss the cache on large specimens).
+  const HistoryEntry* find_pair_history(std::uint64_t key) const;
 
   double skin_ = 0.0;
   bool sort_ = true;
@@ -78,6 +84,8 @@ private:
   std::vector<Vec3> wall_ref_;
   std::vector<std::uint32_t> count_;
   std::vector<HistoryEntry> pair_archive_, wall_archive_;
+  /// Entries of lower id k: pair_archive_[start[k] .. start[k+1]) (k beyond: none).
+  std::vector<std::uint32_t> pair_archive_start_;
   double reach_ = 0.0;
   bool memory_imported_ = false;
   std::vector<MemoryEntry> pair_memory_archive_, wall_memory_archive_;
