@@ -84,7 +84,7 @@ public:
   }
 
 private:
-  std::array<std::uint32_t, 3> dims_{1, 1, 1};
+  std::array<std::uint32_t, 3> dims_{{1, 1, 1}};
   std::vector<std::uint32_t> cell_of_;
   std::vector<std::uint32_t> start_;
   std::vector<std::uint32_t> cursor_;

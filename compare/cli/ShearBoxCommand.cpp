@@ -80,10 +80,20 @@ void declare(ParameterHandler& prm)
                     "Lower box speed [m/s] (S4: 3 mm/min, unaffordable; keep I = 0.1 v sqrt(rho/sigma_n) < 1e-3).");
   prm.declare_entry("max shear", "0.015", Patterns::Double(0.0), "[m] (S4: 15 mm), below L/2.");
   prm.declare_entry("output points", "100", Patterns::Integer(1, 100000), "Rows of the curve.");
-  prm.declare_entry("lid weight", "0", Patterns::Double(0.0), "W_P of S4 eq. (22) [N].");
-  prm.declare_entry("box weight", "0", Patterns::Double(0.0), "W_B of S4 eq. (22) [N].");
+  prm.declare_entry("lid weight", "0", Patterns::Double(0.0),
+                    "The lid's own weight [N], a dead load added to sigma_n L B (S4 eq. (22)'s W_P is the "
+                    "weight of the grains above the gap, computed).");
+  prm.declare_entry("upper box", "free", Patterns::Selection("free|fixed"),
+                    "free: the upper box (sides, rim, skirts) moves on z under its weight and the grains' "
+                    "force, from the rest under the normal stress on (S4); fixed: held at the set gap.");
+  prm.declare_entry("box weight", "9.81", Patterns::Double(0.0),
+                    "W_B of S4 eq. (22) [N]: the free upper box's weight, carried by the specimen.");
+  prm.declare_entry("box mass", "1.0", Patterns::Double(0.0), "m_B, inertia of the free upper box [kg].");
+  prm.declare_entry("box max rise", "0.01", Patterns::Double(0.0),
+                    "Top stop of the free upper box above its seat at the set gap [m]; the gap skirts "
+                    "reach this far, so no grain leaves through the opened gap.");
   prm.declare_entry("lid mass", "1.0", Patterns::Double(0.0),
-                    "Inertia of the loaded lid during rest and shear [kg] (a dead load; its weight is W_P).");
+                    "Inertia of the loaded lid during rest and shear [kg] (a dead load; its weight is 'lid weight').");
   prm.leave_subsection();
   prm.enter_subsection("preparation");
   prm.declare_entry("growth start", "0.5", Patterns::Double(0.05, 1.0), "Placement size / full size (S4: 0.5).");
@@ -184,7 +194,10 @@ ShearBoxCase read_case(const std::string& path)
   p.max_shear = prm.get_double("max shear");
   p.output_points = std::size_t(prm.get_integer("output points"));
   p.lid_weight = prm.get_double("lid weight");
+  p.upper_box_free = prm.get("upper box") == "free";
   p.box_weight = prm.get_double("box weight");
+  p.box_mass = prm.get_double("box mass");
+  p.box_max_rise = prm.get_double("box max rise");
   p.lid_mass = prm.get_double("lid mass");
   prm.leave_subsection();
   prm.enter_subsection("preparation");
@@ -215,6 +228,9 @@ ShearBoxCase read_case(const std::string& path)
   if (!(p.normal_stress > 0.0)) fail("normal stress", "expected > 0 [Pa] (compression positive)");
   if (!(p.shear_speed > 0.0)) fail("shear speed", "expected > 0 [m/s]");
   if (!(p.lid_mass > 0.0)) fail("lid mass", "expected > 0 [kg]");
+  if (!(p.box_mass > 0.0)) fail("box mass", "expected > 0 [kg]");
+  if (!(p.box_max_rise > 0.0 && p.box_max_rise < p.half_height))
+    fail("box max rise", "expected 0 < box max rise < half height [m]");
   if (!(p.youngs_modulus > 0.0) || !(p.modulus_scale > 0.0))
     fail("youngs modulus", "youngs modulus and modulus scale must be > 0");
   if (!(p.clumps.density > 0.0)) fail("density", "expected > 0 [kg/m^3]");
@@ -291,12 +307,15 @@ Command shear_box_command()
       const std::string base = (std::filesystem::path(dir) / stem).string();
       write_atomically(base + ".tsv", [&](std::ostream& out) {
         out << "# S4 direct shear " << sc.title << "; compression positive; lid_rise > 0 is dilation\n";
-        out << "U_m\tlid_rise_m\tF_N_N\tF_S_N\tarea_m2\tsigma_z_Pa\ttau_x_Pa\tmu_b\tinertial_number\ttime_s\trim_F_x_N\tbox_F_z_N\n";
+        out << "U_m\tlid_rise_m\tF_N_N\tF_S_N\tarea_m2\tsigma_z_Pa\ttau_x_Pa\tmu_b\tinertial_number\ttime_s"
+               "\tframe_F_x_N\tbox_F_z_N\tbox_rise_m\tbox_stop_F_z_N\tW_P_N\n";
         char buf[512];
         for (const auto& r : curve) {
-          std::snprintf(buf, sizeof buf, "%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6f\t%.3e\t%.6e\t%.6e\t%.6e\n", r.shear,
+          std::snprintf(buf, sizeof buf,
+                        "%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6f\t%.3e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\t%.6e\n", r.shear,
                         r.lid_rise, r.normal_force, r.shear_force, r.area, r.sigma_z, r.tau_x, r.mu_b,
-                        r.inertial_number, r.time, r.rim_force, r.box_vertical_force);
+                        r.inertial_number, r.time, r.frame_force, r.box_vertical_force, r.box_rise, r.box_stop_force,
+                        r.grain_weight);
           out << buf;
         }
       });
@@ -315,10 +334,19 @@ Command shear_box_command()
           << "inertial_number\t" << s.inertial_number << "\n"
           << "peak_mu_b\t" << s.peak_mu_b << "\n"
           << "shear_at_peak_mm\t" << s.shear_at_peak * 1e3 << "\n"
-          << "rim_share_of_F_S_at_peak\t" << s.rim_share_at_peak << "\n"
+          << "frame_share_of_F_S_at_peak\t" << s.frame_share_at_peak << "\n"
+          << "upper_box\t" << (sc.p.upper_box_free ? "free" : "fixed") << "\n"
+          << "box_weight_N\t" << sc.p.box_weight << "\n"
+          << "box_force_mean_N\t" << s.box_force_mean << "\n"
+          << "box_force_max_row_N\t" << s.box_force_max << "\n"
+          << "box_stop_mean_N\t" << s.box_stop_mean << "\n"
+          << "box_seated_share\t" << s.box_seated_share << "\n"
+          << "box_top_stop_share\t" << s.box_top_share << "\n"
+          << "box_rise_max_mm\t" << s.box_rise_max * 1e3 << "\n"
+          << "box_rise_final_mm\t" << s.box_rise_final * 1e3 << "\n"
+          << "spheres_outside_box_at_end\t" << s.escaped << "\n"
           << "max_contraction_mm\t" << s.max_contraction * 1e3 << "\n"
           << "final_dilation_mm\t" << s.final_dilation * 1e3 << "\n"
-
           << "shear_steps\t" << s.steps << "\n"
           << "prepare_seconds\t" << s.prepare_seconds << "\nshear_seconds\t" << s.shear_seconds << "\n";
       write_atomically(base + "-summary.txt", [&](std::ostream& out) { out << sum.str(); });

@@ -10,17 +10,31 @@
 // is a set of thin one-sided plates: four sides, and a rim plate that closes the box
 // frame outside its footprint (lower: $z = H$, $x \in [U - F, U]$; upper: $z = H + g$,
 // $x \in [L, L + F]$, F = max shear + L/10), standing for the thick frame of a real box.
-// The floor is an unbounded plane moving with the lower box. Choice: the upper box is
-// fixed (horizontally and vertically; S4's is free vertically, but a free massless box
-// rises with the dilating specimen, opens the gap wider than the grains and lets them
-// leak). The side-wall friction of a dilating specimen then presses it down beyond F_N;
-// that force is recorded (box_vertical_force), and so is the rim's x force. The lid
-// (friction mu_lid) is lowered by a velocity servo to the load and is a loaded rigid plate
-// during rest and shear (drive_lid): $P = \sigma_n L B$, $F_N = P + W_P + W_B$ (S4 eq. 22)
-// with the lid and box weights W_P, W_B given as parameters (0 by default).
+// The floor is an unbounded plane moving with the lower box.
+// Upper box (S4: fixed horizontally, free vertically): its four sides, its rim and three
+// skirts form one rigid body moving only along z, released at the start of the rest
+// under sigma_n (the gap screws backed off), with
+//   $m_B \ddot z_B = F_{B,z} - W_B$,  $F_{B,z} = \sum_{box\ plates} F_z$ (the particles' force),
+// integrated each DEM step like the loaded lid (drive_box). The box rests on spacers at the
+// set gap (it cannot sink below its seat: a lower stop) and a top stop limits its rise to
+// box_max_rise (stop reactions recorded). Off the stops the box is carried by the specimen:
+// on average $F_{B,z} = W_B$, so the side friction on the specimen is bounded by the box
+// weight and the specimen carries $F_N = P + W_P + W_B$ (S4 eq. 22). A free box rises with
+// a dilating specimen and opens the gap by the dilation (a grain or more); the plates are
+// one-sided (a grain that passes the gap ends behind a plate and explodes), so the gap is
+// closed by skirts, plates a quarter of the smallest radius behind the box plates (no
+// double contact): the upper box's x-, y- and y+ skirts hang from the bottom of its sides to
+// box_max_rise below the lower box's top (the y skirts also along the rim), and the lower
+// box carries an x+ skirt up to the highest rim position. upper_box_free = false keeps the box
+// fixed (the former model; its side friction then exceeds W_B and is recorded).
+// The lid (friction mu_lid) is lowered by a velocity servo to the load and is a loaded rigid
+// plate during rest and shear (drive_lid) under $P = \sigma_n L B$ plus its own weight (a
+// parameter, 0 by default). $F_N = F_{lid} + W_P + W_B$ (S4 eq. 22): F_lid the particles' force
+// on the lid, W_P the weight of the grains above the middle of the gap (S4: the weight of the
+// granular medium of the upper box), W_B the box weight.
 // Measurements (S4 eq. 22-24), compression positive in the reports:
 //   $F_S = \sum_{upper\ walls} (N_x + S_x)$ over S4's N_wall = 5 walls (the lid and the
-//   four upper sides; the x force on the upper rim is recorded apart), $A = B(L - U)$,
+//   four upper sides; the x force on the upper rim and skirts is recorded apart), $A = B(L - U)$,
 //   $\sigma_z = F_N/A$, $\tau_x = F_S/A$, $\mu_b = F_S/F_N$; lid displacement from the
 //   start of shearing (up = dilation); inertial number $I = \dot\gamma \bar d \sqrt{\rho/\sigma_n}$
 //   with $\dot\gamma = v/(10\bar d)$ (a shear band ten mean diameters thick).
@@ -73,8 +87,11 @@ struct DirectShearParameters
   double gravity = 9.81;
   // Loading.
   double normal_stress = 100e3;    ///< sigma_n [Pa], compression positive
-  double lid_weight = 0.0;         ///< W_P [N]
-  double box_weight = 0.0;         ///< W_B [N]
+  double lid_weight = 0.0;         ///< [N] the lid's own weight, a dead load added to P
+  double box_weight = 9.81;        ///< W_B [N], S4 eq. (22)
+  bool upper_box_free = true;      ///< S4: free vertically (false: fixed, the former model)
+  double box_mass = 1.0;           ///< m_B [kg] of the free upper box (sides, rim, skirts)
+  double box_max_rise = 0.01;      ///< [m] top stop of the free box above its seat; skirt reach
   double lid_mass = 1.0;           ///< [kg] inertia of the loaded lid during rest and shear
   double shear_speed = 0.05;       ///< [m/s] of the lower box
   double max_shear = 0.015;        ///< [m]
@@ -109,9 +126,12 @@ struct ShearRecord
   double mu_b = 0.0;
   double inertial_number = 0.0;
   double time = 0.0;          ///< [s] DEM time
-  double rim_force = 0.0;     ///< [N] x force on the upper rim plate (not in F_S, S4 eq. 22)
-  double box_vertical_force = 0.0;  ///< [N] particles' upward (friction) force on the four upper
-                                    ///< sides: the fixed box presses the upper specimen down by it
+  double frame_force = 0.0;   ///< [N] x force on the upper rim and skirts (not in F_S, S4 eq. 22)
+  double box_vertical_force = 0.0;  ///< [N] F_{B,z}: particles' upward force on the upper box
+                                    ///< (sides, rim, skirts) = the box's load on the specimen
+  double box_rise = 0.0;      ///< [m] upper box above its seat
+  double box_stop_force = 0.0;  ///< [N] stop reaction on the box (> 0 seat pushes up, < 0 top stop)
+  double grain_weight = 0.0;  ///< [N] W_P of S4 eq. (22): weight of the clumps above mid-gap
 };
 
 struct ShearSummary
@@ -129,7 +149,16 @@ struct ShearSummary
   double void_ratio = 0.0;         ///< e at the start of shear
   double rest_kinetic_ratio = 0.0; ///< E_kin / E_elastic at the start of shear
   double rest_lid_speed = 0.0;     ///< [m/s] |lid speed| at the start of shear
-  double rim_share_at_peak = 0.0;  ///< upper-rim x force / F_S at the peak of mu_b
+  double frame_share_at_peak = 0.0;  ///< upper rim and skirts' x force / F_S at the peak of mu_b
+  // The free upper box over the shear (time averages over every step).
+  double box_force_mean = 0.0;     ///< [N] mean F_{B,z} (= W_B when carried by the specimen)
+  double box_stop_mean = 0.0;      ///< [N] mean stop reaction (> 0 seat, < 0 top stop)
+  double box_force_max = 0.0;      ///< [N] max F_{B,z} over the output rows
+  double box_rise_max = 0.0;       ///< [m]
+  double box_rise_final = 0.0;     ///< [m]
+  double box_seated_share = 0.0;   ///< fraction of the shear steps on the seat
+  double box_top_share = 0.0;      ///< fraction of the shear steps at the top stop
+  std::size_t escaped = 0;         ///< spheres outside the two box halves at the end
   double prepare_seconds = 0.0, shear_seconds = 0.0;
   std::uint64_t steps = 0;
 };
@@ -167,6 +196,18 @@ public:
   /// One update of the vertical speed of the loaded lid (rigid plate under the particles'
   /// force and the load P; used for rest and shear).
   void drive_lid();
+  /// One update of the vertical speed of the free upper box (rigid body on z under the
+  /// particles' force, its weight and the seat and top stops); no-op when it is fixed.
+  void drive_box();
+  /// The walls of the upper box body (sides, rim, skirts: upper_walls() without the lid).
+  std::vector<std::size_t> box_walls() const { return {upper_.begin() + 1, upper_.end()}; }
+  /// [m] rise of the upper box above its seat.
+  double box_rise() const;
+  /// W_P of S4 eq. (22) [N]: weight of the clumps whose centre is above the middle of the gap.
+  double grain_weight() const;
+  /// Spheres whose centre is outside the two box halves (x in [min(0, U), L + max(0, U)],
+  /// y in [0, B], z >= 0): grains lost through the gap.
+  std::size_t escaped_spheres() const;
   /// Runs `steps` steps with the lid servo on.
   void run_servo(std::size_t steps);
 
@@ -182,6 +223,12 @@ private:
   std::vector<std::size_t> upper_, lower_;
   double gap_ = 0.0, d_mean_ = 0.0, dt_ = 0.0, r_min_ = 0.0;
   double lid_start_ = 0.0;
+  double box_seat_z_ = 0.0;     ///< [m] z of the upper x- side's centre at the seat
+  bool box_released_ = false;   ///< the free box moves (after loading)
+  double box_stop_ = 0.0;       ///< [N] the last step's stop reaction
+  // Shear statistics of the box (sums over steps).
+  double box_force_sum_ = 0.0, box_stop_sum_ = 0.0;
+  std::uint64_t box_steps_ = 0, box_seated_steps_ = 0, box_top_steps_ = 0;
   double servo_target_ = 0.0;  ///< [N] the servo's current target
   double solid_volume_ = 0.0;  ///< [m^3] sum of clump masses / density
   ShearSummary info_;

@@ -196,6 +196,9 @@ TEST(CommandLine, ShearBoxRefusesBadInputNamingFileAndParameterWithExitTwo)
                      {"subsection loading\n  set normal stress = high\nend\n", "normal stress"},
                      {"subsection grains\n  set mass min = 3\nend\n", "mass min"},
                      {"subsection box\n  set gap fraction = -1\nend\n", "gap fraction"},
+                     {"subsection loading\n  set upper box = floating\nend\n", "upper box"},
+                     {"subsection loading\n  set box mass = 0\nend\n", "box mass"},
+                     {"subsection loading\n  set box max rise = 0.05\nend\n", "box max rise"},
                      {"set no such entry = 1\n", "no such entry"}};
   const fs::path file = cwd / "geocomp_bad_shear_box.prm";
   for (const Bad &b : bad) {

@@ -23,7 +23,7 @@ namespace {
 Stage stress_stage(double sx, double sy, double sz)
 {
   Stage s;
-  s.axes = {AxisDrive::stress(sx), AxisDrive::stress(sy), AxisDrive::stress(sz)};
+  s.axes = {{AxisDrive::stress(sx), AxisDrive::stress(sy), AxisDrive::stress(sz)}};
   return s;
 }
 
