@@ -20,13 +20,6 @@ using namespace geocomp::dem;
 using namespace geocomp::dem::test;
 
 namespace {
-Stage stress_stage(double sx, double sy, double sz)
-{
-  Stage s;
-  s.axes = {{AxisDrive::stress(sx), AxisDrive::stress(sy), AxisDrive::stress(sz)}};
-  return s;
-}
-
 StageControl control_of(const Stage &stage, double t0, const Vector3 &eps0 = Vector3::Zero())
 {
   StageControl c;
@@ -120,7 +113,7 @@ TEST(DemEngine, ServoHoldsLateralStressWhileTheAxialWallsMove)
   // then stops; the x and y servos hold -p throughout and settle within 0.5 %.
   DemEngine engine(consolidated().system, engine_parameters());
   Stage load;
-  load.axes = {AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure), AxisDrive::rate(-0.5)};
+  load.axes = {{AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure), AxisDrive::rate(-0.5)}};
   engine.begin_control(control_of(load, 0.0));
   const auto start = std::chrono::steady_clock::now();
   const std::uint64_t steps0 = engine.system().n_steps();
@@ -137,7 +130,7 @@ TEST(DemEngine, ServoHoldsLateralStressWhileTheAxialWallsMove)
   EXPECT_NEAR(s.strain(2, 2), -0.005, 1e-4);
   EXPECT_LT(s.stress(2, 2), -kPressure); // the axial stress rose
   Stage hold;
-  hold.axes = {AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure), AxisDrive::rate(0.0)};
+  hold.axes = {{AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure), AxisDrive::rate(0.0)}};
   engine.begin_control(control_of(hold, engine.time(), s.strain.diagonal()));
   HoldResult settled;
   for (int k = 1; k <= 40; ++k) {
@@ -192,7 +185,7 @@ TEST(DemEngine, SaveAndRestoreResumeBitForBit)
 {
   DemEngine engine(consolidated().system, engine_parameters());
   Stage stage;
-  stage.axes = {AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure), AxisDrive::rate(-1.0)};
+  stage.axes = {{AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure), AxisDrive::rate(-1.0)}};
   engine.begin_control(control_of(stage, 0.0));
   engine.advance_to(0.002);
   const auto saved = engine.save();

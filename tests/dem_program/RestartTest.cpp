@@ -185,7 +185,7 @@ TEST(DemEngineInterrupt, RequestStopsTheRunWithACheckpoint)
   p.checkpoint_file = file;
   DemEngine engine(consolidated().system, p);
   Stage stage;
-  stage.axes = {AxisDrive::rate(-0.5), AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure)};
+  stage.axes = {{AxisDrive::rate(-0.5), AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure)}};
   StageControl control;
   control.stage = &stage;
   engine.begin_control(control);
