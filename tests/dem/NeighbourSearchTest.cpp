@@ -1,12 +1,15 @@
 // Neighbour lists: complete (same contacts as brute force), history carried across
-// rebuilds and checkpoints.
+// rebuilds and checkpoints; the half stencil of a cell-ordered grid.
+#include "dem/CellGrid.h"
 #include "dem/DemSystem.h"
 #include "TestSystems.h"
 
 #include <gtest/gtest.h>
 
 #include <map>
+#include <random>
 #include <set>
+#include <vector>
 
 using namespace geocomp::dem;
 
@@ -105,4 +108,31 @@ TEST(NeighbourSearch, ExportedContactStateRestoresTangentialForces)
   EXPECT_GT(matched, 50u);
   // Not bitwise: the restart evaluates the dashpots once more with on-step velocities.
   EXPECT_LT(worst, 1e-2 * scale);
+}
+
+TEST(CellGrid, HalfStencilMeetsTheLaterParticlesInTheFullStencilsOrder)
+{
+  // Random points binned, then stored in cell order (as the spatial sort leaves them):
+  // for_each_after(p) must list exactly the q > p of the 27-cell stencil, in its order.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec3> x(3000);
+  for (Vec3& p : x) p = Vec3(u(rng), 0.6 * u(rng), 0.3 * u(rng));
+  CellGrid grid;
+  grid.build(x, 0.07);
+  std::vector<Vec3> sorted;
+  for (const Index k : grid.sorted()) sorted.push_back(x[k]);
+  grid.build(sorted, 0.07);
+  for (std::size_t k = 0; k < sorted.size(); ++k) ASSERT_EQ(grid.sorted()[k], Index(k));
+  std::size_t listed = 0;
+  for (Index p = 0; p < sorted.size(); ++p) {
+    std::vector<Index> full, half;
+    grid.for_each_near(grid.cell_of_particle(p), [&](Index q) {
+      if (q > p) full.push_back(q);
+    });
+    grid.for_each_after(p, [&](Index q) { half.push_back(q); });
+    ASSERT_EQ(full, half) << "particle " << p;
+    listed += half.size();
+  }
+  EXPECT_GT(listed, 20 * sorted.size());  // a real neighbourhood, not empty cells
 }
