@@ -21,7 +21,7 @@ namespace geocomp::dem {
 namespace {
 /// Fixed block size of every parallel reduction: block sums do not depend on the
 /// number of threads, and are added in block order (DEM-NOTES section 5).
-constexpr std::size_t kBlock = 2048;
+constexpr std::size_t kBlock = 256;
 
 std::size_t n_blocks(std::size_t n) { return (n + kBlock - 1) / kBlock; }
 
@@ -551,6 +551,7 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
   const std::size_t nbp = n_blocks(pairs.size());
   const std::size_t nbw = n_blocks(wslots.size());
   if constexpr (Track) block_losses_.assign(3 * (nbp + nbw), 0.0);
+  wall_terms_.resize(wslots.size());
   const double mu = mu_;
   [[maybe_unused]] auto& pmem = lists_.pair_memory;
   [[maybe_unused]] auto& wmem = lists_.wall_memory;
@@ -634,6 +635,8 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
       const std::size_t end = std::min(wslots.size(), std::size_t(b + 1) * kBlock);
       for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
         WallSlot& s = wslots[c];
+        WallTerm& term = wall_terms_[c];
+        term.recorded = term.touching = false;
         const PlaneWall& wall = walls_[s.wall];
         const Index p = s.particle;
         Vec3 n_w;
@@ -669,6 +672,19 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
           fric += f.friction_loss;
           bond += f.bond_loss;
         }
+        // The slot's terms of the wall's record (summed below in slot order): the torque of
+        // -F about the wall's point from the contact point on the plane, the servo's stiffness.
+        if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;
+        term.recorded = true;
+        const Vec3 xc = x[p] - (R[p] - s.overlap) * n_w;
+        term.torque = (xc - wall.point).cross(-s.force);
+        if (!(s.overlap > 0.0)) continue;  // a bond across a gap: force, but no contact
+        term.touching = true;
+        ContactKinematics kw;
+        kw.overlap = s.overlap;
+        kw.m_eff = store_.mass[p];
+        kw.r_eff = R[p];
+        term.stiffness = law.normal().evaluate(kw).stiffness;
       }
       if constexpr (Track) {
         block_losses_[3 * (nbp + b)] = damp;
@@ -716,7 +732,7 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
     }
   }
 
-  // Wall records, in slot order (few contacts: serial).
+  // Wall records, in slot order (serial: only the sums; pass A computed the terms).
   for (PlaneWall& wall : walls_) {
     wall.force.setZero();
     wall.torque.setZero();
@@ -724,22 +740,15 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
     wall.n_contacts = 0;
   }
   for (std::size_t c = 0; c < wslots.size(); ++c) {
+    const WallTerm& term = wall_terms_[c];
+    if (!term.recorded) continue;
     const WallSlot& s = wslots[c];
-    if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;
     PlaneWall& wall = walls_[s.wall];
-    const Index p = s.particle;
-    Vec3 n_w;
-    wall.gap(x[p], n_w);
-    const Vec3 xc = x[p] - (R[p] - s.overlap) * n_w;  // contact point on the plane
     wall.force -= s.force;
-    wall.torque += (xc - wall.point).cross(-s.force);
+    wall.torque += term.torque;
     if constexpr (Law::has_rolling) wall.torque -= wmem[c].rolling;  // the wall receives -M_r
-    if (!(s.overlap > 0.0)) continue;  // a bond across a gap: force, but no contact
-    ContactKinematics k;
-    k.overlap = s.overlap;
-    k.m_eff = store_.mass[p];
-    k.r_eff = R[p];
-    wall.stiffness += law.normal().evaluate(k).stiffness;
+    if (!term.touching) continue;
+    wall.stiffness += term.stiffness;
     ++wall.n_contacts;
   }
 }

@@ -288,6 +288,15 @@ private:
   std::uint64_t steps_ = 0;
   EnergyLedger losses_{};             // dissipated_* and wall_work accumulate here
   std::vector<double> block_losses_;  // per fixed-size block, summed in order
+  /// A wall slot's terms of its wall's record, computed in pass A (in parallel) and summed
+  /// in slot order afterwards (the same bits as summing them there).
+  struct WallTerm
+  {
+    Vec3 torque = Vec3::Zero();  ///< (x_c - wall point) x (-F)
+    double stiffness = 0.0;      ///< k_n of the contact (touching only)
+    bool recorded = false, touching = false;
+  };
+  std::vector<WallTerm> wall_terms_;  // one per wall slot
   std::vector<Vec3> wall_force_old_;
 };
 

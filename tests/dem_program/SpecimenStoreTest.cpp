@@ -116,7 +116,7 @@ TEST(SpecimenStore, PortableDatasetsRebuildTheSameSpecimen)
     h5::Handle f = h5::open_file(store, true);
     h5::Handle g = h5::open_group(f.id(), "specimens/a");
     H5Ldelete(g.id(), "state", H5P_DEFAULT);
-    h5::Handle space(H5Screate_simple(1, std::array<hsize_t, 1>{8}.data(), nullptr), H5Sclose);
+    h5::Handle space(H5Screate_simple(1, std::array<hsize_t, 1>{{8}}.data(), nullptr), H5Sclose);
     h5::Handle set(H5Dcreate2(g.id(), "state", H5T_NATIVE_UCHAR, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                    H5Dclose);
     const char junk[8] = {'O', 'T', 'H', 'E', 'R', 'B', 'L', 'D'};
