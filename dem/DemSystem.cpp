@@ -1143,6 +1143,7 @@ std::size_t DemSystem::memory_bytes() const
   return store_.memory_bytes() + index_of_.capacity() * sizeof(Index) + lists_.memory_bytes() +
          search_.memory_bytes() + block_losses_.capacity() * sizeof(double) +
          (walls_.capacity() * sizeof(PlaneWall)) + wall_force_old_.capacity() * sizeof(Vec3) +
+         wall_terms_.capacity() * sizeof(WallTerm) +
          clumps_.memory_bytes();
 }
 
