@@ -40,7 +40,7 @@ struct ExplicitSpecimen::Mesh {
   };
   std::vector<CellData> cells;
   std::vector<double> mass_per_density; ///< lumped mass / rho, per dof
-  std::vector<types::global_dof_index> bottom_y, top_y, pinned_x;
+  std::vector<types::global_dof_index> bottom_y, top_y, pinned_x, end_x;
   double h_min = 0.0;
 };
 
@@ -94,9 +94,11 @@ ExplicitSpecimen::ExplicitSpecimen(const KineticNikolaevsky &model, SpecimenGeom
         m.top_y.push_back(cell->vertex_dof_index(v, 1));
       if ((bottom || top) && std::abs(p[0] - 0.5 * geometry_.width) < 1e-9 * geometry_.width)
         m.pinned_x.push_back(cell->vertex_dof_index(v, 0));
+      if (bottom || top)
+        m.end_x.push_back(cell->vertex_dof_index(v, 0));
     }
   }
-  for (auto *list : {&m.bottom_y, &m.top_y, &m.pinned_x}) {
+  for (auto *list : {&m.bottom_y, &m.top_y, &m.pinned_x, &m.end_x}) {
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
   }
@@ -141,7 +143,9 @@ SpecimenRunResult ExplicitSpecimen::run(LoadingMode mode, double strain_rate) co
     prescribed[i] = 1;
   for (auto i : m.top_y)
     prescribed[i] = 1;
-  for (auto i : m.pinned_x)
+  // Smooth platens pin u_x at the middle node of each end only; bonded ones hold every end node.
+  const auto &pinned_x = controls_.bonded_platens ? m.end_x : m.pinned_x;
+  for (auto i : pinned_x)
     prescribed[i] = 1;
   std::vector<KineticState> states(n_points(), model_.initial_state());
 
@@ -167,7 +171,7 @@ SpecimenRunResult ExplicitSpecimen::run(LoadingMode mode, double strain_rate) co
       v[i] = -sign * ramp * bottom_speed;
     for (auto i : m.top_y)
       v[i] = sign * ramp * top_speed;
-    for (auto i : m.pinned_x)
+    for (auto i : pinned_x)
       v[i] = 0.0;
     // Strain increments through the kinetic points, internal forces.
     std::fill(f.begin(), f.end(), 0.0);

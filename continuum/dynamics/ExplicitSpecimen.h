@@ -19,7 +19,8 @@
 //     JxW computed once (the geometry never changes);
 //   - ends: smooth rigid platens, u_y prescribed on the bottom and top edges
 //     (velocities -+ epsdot H / 2: compression brings them together), u_x pinned at the
-//     middle node of each end, lateral edges free; the specimen starts at rest and the
+//     middle node of each end (or, with bonded platens, at every end node: S1 does not say
+//     which), lateral edges free; the specimen starts at rest and the
 //     platen speed rises as a half cosine over half of t_st (see below): an impulsive start
 //     sends a front of amplitude rho c V from each platen, the two fronts meet mid-height
 //     and double, and the specimen breaks there before the end load reaches its strength
@@ -60,6 +61,7 @@ struct DynamicsControls {
   double max_time_factor = 4.0;         ///< stop at max_time_factor * k_S1(epsdot) * t_st at the latest
   bool fixed_bottom = false;            ///< true: the bottom platen stays, the top one moves at epsdot H and the strength is its force
   double platen_rise_fraction = 0.5;    ///< platen speed ramps smoothly from 0 over this fraction of t_st (0: impulsive start)
+  bool bonded_platens = false;          ///< true: u_x = 0 on every end node (rough, bonded platens); false: smooth
   unsigned int curve_samples = 200;     ///< samples of the load curve kept in the result
 };
 

@@ -72,6 +72,10 @@ void declare(ParameterHandler &prm)
   prm.declare_entry("fixed bottom", "false", Patterns::Bool(),
                     "false: both platens move at epsdot H / 2 and the strength is their mean force; true: the "
                     "bottom platen stays, the top one moves at epsdot H and the strength is its force.");
+  prm.declare_entry("platens", "smooth", Patterns::Selection("smooth|bonded"),
+                    "smooth: the ends slide freely along the platens (u_x held at the middle node only); "
+                    "bonded: no end node slides (rough platens, the ends cannot expand laterally). S1 does not "
+                    "say which.");
   prm.declare_entry("platen rise fraction", "0.5", Patterns::Double(0.0, 1.0),
                     "The platen speed rises smoothly (half cosine) from rest to its constant value over this "
                     "fraction of t_st = sigma_st / (E epsdot); 0: impulsive start.");
@@ -198,6 +202,7 @@ RateSweepCase parse_rate_sweep_case(const std::string &text, const std::string &
   s.controls.stop_load_fraction = prm.get_double("stop load fraction");
   s.controls.platen_rise_fraction = prm.get_double("platen rise fraction");
   s.controls.fixed_bottom = prm.get_bool("fixed bottom");
+  s.controls.bonded_platens = prm.get("platens") == "bonded";
   prm.leave_subsection();
   if (!(s.controls.time_step_safety > 0.0))
     fail("dynamics/time step safety", "a value in (0, 1]");

@@ -69,6 +69,22 @@ TEST(S1Specimen, WithoutKineticExtensionOnlyInertiaRaisesStrengthAtTheHighestRat
   EXPECT_LT(rows[3].normalized_strength, 0.8 * compressive_strength_factor(1e3));
 }
 
+TEST(S1Specimen, BondedPlatensLowerTheQuasiStaticStrengthSmoothOnesKeepTheSpecimenHomogeneous)
+{
+  // Bonded ends cannot expand laterally while the rest of the specimen does (Poisson): the
+  // stress is no longer uniform (it concentrates where the held ends meet the free sides)
+  // and points fracture before the homogeneous strength is reached; smooth platens leave
+  // the specimen homogeneous (strength 1).
+  auto setup = small_sweep(S1Material::sandstone(), LoadingMode::compression, {false});
+  setup.strain_rates = {1e-2};
+  const double smooth = run_rate_sweep(setup).at(0).normalized_strength;
+  setup.controls.bonded_platens = true;
+  const double bonded = run_rate_sweep(setup).at(0).normalized_strength;
+  std::printf("  1e-2 1/s, kinetic off: smooth platens %.4f, bonded platens %.4f\n", smooth, bonded);
+  EXPECT_NEAR(smooth, 1.0, 0.01);
+  EXPECT_LT(bonded, smooth - 0.02);
+}
+
 TEST(S1Specimen, ImpulsivePlatenStartFracturesEarlierThanSmoothStart)
 {
   // The impulsive start sends a front of amplitude rho c V from each platen; the two meet
