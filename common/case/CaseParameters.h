@@ -94,8 +94,23 @@ struct HardeningTable {
   double operator()(double kappa) const;
 };
 
+/// S1's quasi-static Nikolaevsky model (continuum/model = nikolaevsky), subsection
+/// continuum/nikolaevsky (NikolaevskySection.cpp): a row of S1's material table, or
+/// custom values. SI; stresses are magnitudes of uniaxial compression.
+struct NikolaevskyParameters {
+  std::string material = "sandstone";   ///< sandstone | concrete (S1's table) | custom
+  // material = custom only, where every one is required:
+  double youngs_modulus = 0.0;          ///< E [Pa]
+  double poisson_ratio = 0.0;           ///< nu
+  double yield_stress = 0.0;            ///< sigma_y [Pa]
+  double compressive_strength = 0.0;    ///< sigma_c [Pa], > sigma_y
+  double internal_friction = 0.0;       ///< alpha = 3 omega (S1 eq. (1))
+  double dilatancy = 0.0;               ///< Lambda (S1 eq. (2))
+  double plastic_strain_at_strength = 0.0; ///< axial plastic strain at sigma_c (sets the hardening)
+};
+
 struct ContinuumParameters {
-  std::string model = "mohr-coulomb";   ///< mohr-coulomb | drucker-prager
+  std::string model = "mohr-coulomb";   ///< mohr-coulomb | drucker-prager | nikolaevsky
   std::string dp_matching = "outer";    ///< outer | inner | plane-strain
   double youngs_modulus = 200.0e6;      ///< [Pa]
   double poisson_ratio = 0.25;
@@ -116,6 +131,7 @@ struct ContinuumParameters {
   unsigned int load_steps_per_sample = 2;
   unsigned int point_substeps = 20;     ///< material-point increments per sample
   double reference_element_size = 0.0;  ///< [m] crack-band reference width; 0 = the cube edge L0
+  NikolaevskyParameters nikolaevsky;    ///< for model = nikolaevsky
 };
 
 struct OutputParameters {

@@ -91,12 +91,16 @@ DemParameters parse_dem(dealii::ParameterHandler &prm, const Reader &)
 void declare_continuum(dealii::ParameterHandler &prm)
 {
   prm.enter_subsection("continuum");
-  prm.declare_entry("model", "mohr-coulomb", Selection("mohr-coulomb|drucker-prager"),
-                    "Constitutive model: Mohr-Coulomb with hardening/softening, or Drucker-Prager.");
+  prm.declare_entry("model", "mohr-coulomb", Selection("mohr-coulomb|drucker-prager|nikolaevsky"),
+                    "Constitutive model: Mohr-Coulomb with hardening/softening, Drucker-Prager matched to it, or "
+                    "nikolaevsky: S1's quasi-static model (Mises-Schleicher yield, Nikolaevsky non-associated flow, "
+                    "linear hardening; docs/s1-kinetic-model.md), whose material is subsection nikolaevsky: the "
+                    "entries E, nu, cohesion, friction and dilatancy angle below are then not used.");
   prm.declare_entry("drucker prager matching", "outer", Selection("outer|inner|plane-strain"),
                     "How Drucker-Prager is matched to the Mohr-Coulomb c and phi.");
-  prm.declare_entry("youngs modulus", "200e6", Double(1e3, 1e13), "Young's modulus E [Pa].");
-  prm.declare_entry("poisson ratio", "0.25", Double(0, 0.4999), "Poisson ratio nu.");
+  prm.declare_entry("youngs modulus", "200e6", Double(1e3, 1e13),
+                    "Young's modulus E [Pa] (mohr-coulomb, drucker-prager).");
+  prm.declare_entry("poisson ratio", "0.25", Double(0, 0.4999), "Poisson ratio nu (mohr-coulomb, drucker-prager).");
   prm.declare_entry("cohesion", "0:1e5", Anything(),
                     "Cohesion c(kappa) [Pa], piecewise linear: 'kappa:value, kappa:value, ...', kappa from 0 "
                     "increasing; constant beyond the last point.");
@@ -111,7 +115,9 @@ void declare_continuum(dealii::ParameterHandler &prm)
                     "flow (docs/continuum-fe.md). Meant for degree 1.");
   prm.declare_entry("imperfection radius", "0", Double(0, 1e3),
                     "Radius [m] of a weaker zone that triggers a band; 0 = none.");
-  prm.declare_entry("imperfection factor", "0.9", Double(0.01, 1.0), "Cohesion multiplier inside the weaker zone.");
+  prm.declare_entry("imperfection factor", "0.9", Double(0.01, 1.0),
+                    "Cohesion multiplier inside the weaker zone (drucker-prager: of Y(kappa); nikolaevsky: of every "
+                    "strength, sigma_y and sigma_c, hence of Y(kappa)).");
   prm.declare_entry("imperfection centre", "0.5, 0.5, 0.5", List(Double(0, 1), 3, 3),
                     "Centre of the weaker zone, as fractions of L0.");
   prm.declare_entry("linear solver", "gmres", Selection("gmres|cg|direct"),
@@ -131,13 +137,15 @@ void declare_continuum(dealii::ParameterHandler &prm)
   prm.declare_entry("point substeps per sample", "20", Integer(1, 100000),
                     "Load increments per sampling interval of the material-point engine.");
   prm.declare_entry("regularization", "none", Selection("crack-band|none"),
-                    "Softening regularization: scale the softening by element size (crack band) or none. "
-                    "The cube's solution stays diffuse on the meshes tested (docs/continuum-fe.md), where the "
-                    "unregularized curves already agree across meshes.");
+                    "Softening regularization: scale the softening by element size (crack band) or none "
+                    "(nikolaevsky hardens linearly and never softens: nothing to scale). The cube's solution stays "
+                    "diffuse on the meshes tested (docs/continuum-fe.md), where the unregularized curves already "
+                    "agree across meshes.");
   prm.declare_entry("reference element size", "0", Double(0, 1e3),
                     "Crack-band reference width [m]: the softening table holds as written for elements of this size "
                     "and is stretched by width/h_e elsewhere; 0 = the cube edge L0 (the table describes the whole "
                     "specimen, as a material-point calibration from DEM does).");
+  declare_nikolaevsky(prm);
   prm.leave_subsection();
 }
 
@@ -200,6 +208,7 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   p.load_steps_per_sample = prm.get_integer("load steps per sample");
   p.point_substeps = prm.get_integer("point substeps per sample");
   p.reference_element_size = prm.get_double("reference element size");
+  p.nikolaevsky = parse_nikolaevsky(prm, r);
   prm.leave_subsection();
   for (const auto &[k, c] : p.cohesion.points)
     if (c < 0)

@@ -28,6 +28,9 @@ void declare_dem(dealii::ParameterHandler &prm);
 DemParameters parse_dem(dealii::ParameterHandler &prm, const Reader &r);
 void declare_continuum(dealii::ParameterHandler &prm);
 ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader &r);
+/// Subsection `nikolaevsky` of `continuum` (NikolaevskySection.cpp); called from inside it.
+void declare_nikolaevsky(dealii::ParameterHandler &prm);
+NikolaevskyParameters parse_nikolaevsky(dealii::ParameterHandler &prm, const Reader &r);
 void declare_program(dealii::ParameterHandler &prm, unsigned int stages);
 LoadingProgram parse_program(dealii::ParameterHandler &prm, unsigned int stages, const Reader &r);
 void declare_output(dealii::ParameterHandler &prm);

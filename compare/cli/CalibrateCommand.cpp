@@ -82,6 +82,10 @@ Command calibrate_command()
     std::vector<FitTarget> targets;
     try {
       c = read_case(a.positional[0]);
+      if (c.continuum.model == "nikolaevsky")
+        throw CaseError(c.file, "continuum/model",
+                        "calibrate fits the Mohr-Coulomb parameters (E, nu, cohesion, friction, dilatancy, also "
+                        "behind drucker-prager): expected mohr-coulomb or drucker-prager, got nikolaevsky");
       if (c.calibration.targets.empty())
         throw CaseError(c.file, "calibration/targets", "expected at least one results file to fit");
       for (std::size_t k = 0; k < c.calibration.targets.size(); ++k) {

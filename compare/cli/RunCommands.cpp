@@ -342,7 +342,10 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
     if (k < fe_maps.size())
       in.maps.push_back(std::move(fe_maps[k]));
   }
-  if (point) {
+  if (point && c.continuum.model == "nikolaevsky") {
+    in.notes.push_back("No Rudnicki-Rice prediction: it is computed from the Mohr-Coulomb parameters, and the "
+                       "case's model is nikolaevsky.");
+  } else if (point) {
     const continuum::MaterialParameters m = continuum_material(c);
     in.verdict = compare::rudnicki_rice_verdict(
       compare::rudnicki_rice_onset(*point, m.mohr_coulomb, m.drucker_prager_matching, in.kind), onsets);

@@ -1,6 +1,8 @@
 // The continuum section of a case file as the material the engines take: tables in the
 // case's units (Pa, degrees) to MohrCoulombParameters (Pa, radians) and the Drucker-Prager
-// matching. Shared by the command line and the calibration, which varies the section.
+// matching; for model = nikolaevsky, subsection nikolaevsky to S1's material (a row of
+// S1Material's table or the custom values). Shared by the command line and the
+// calibration, which varies the section.
 #pragma once
 
 #include "common/case/CaseParameters.h"

@@ -1,5 +1,6 @@
 #include "continuum/driver/Materials.h"
 
+#include "continuum/kinetic/NikolaevskyModel.h"
 #include "continuum/models/MohrCoulombModel.h"
 
 #include <cmath>
@@ -102,6 +103,25 @@ public:
 private:
   DruckerPragerParameters p_;
 };
+
+// S1's quasi-static model: the imperfection scales every strength of the S1 table, hence
+// Y(kappa) = f (Y0 + H kappa) with H = m_c (sigma_c - sigma_y)(...)/eps_p*; linear hardening
+// has no softening branch, so the crack-band stretch is ignored (see the header).
+class NikolaevskyFactory : public MaterialFactory {
+public:
+  explicit NikolaevskyFactory(kinetic::S1Material m) : m_(std::move(m)) { m_.validate_plasticity(); }
+  std::shared_ptr<const ConstitutiveModel> make(const MaterialVariant &v) const override
+  {
+    kinetic::S1Material q = m_;
+    q.yield_stress *= v.cohesion_factor;
+    q.compressive_strength *= v.cohesion_factor;
+    q.tensile_strength *= v.cohesion_factor;
+    return std::make_shared<kinetic::NikolaevskyModel>(q);
+  }
+
+private:
+  kinetic::S1Material m_;
+};
 } // namespace
 
 std::shared_ptr<const MaterialFactory> fixed_material(std::shared_ptr<const ConstitutiveModel> model)
@@ -121,8 +141,10 @@ std::shared_ptr<const MaterialFactory> make_material_factory(const MaterialParam
   if (p.model == "linear-elastic")
     return fixed_material(
       std::make_shared<LinearElasticModel>(p.mohr_coulomb.youngs_modulus, p.mohr_coulomb.poisson_ratio));
-  throw std::invalid_argument("continuum material: model must be mohr-coulomb, drucker-prager or "
-                              "linear-elastic, got '" + p.model + "'");
+  if (p.model == "nikolaevsky")
+    return std::make_shared<NikolaevskyFactory>(p.nikolaevsky);
+  throw std::invalid_argument("continuum material: model must be mohr-coulomb, drucker-prager, "
+                              "linear-elastic or nikolaevsky, got '" + p.model + "'");
 }
 
 } // namespace geocomp::continuum

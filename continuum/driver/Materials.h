@@ -14,10 +14,14 @@
 //     where kappa_s is the first breakpoint after which a strength parameter (c or phi;
 //     Y or omega) decreases. The hardening branch (distributed deformation) is unchanged.
 // A MaterialFactory builds the model for any such variant; the engines cache one model per
-// distinct variant.
+// distinct variant. For S1's nikolaevsky model (linear hardening, no softening branch) the
+// imperfection scales every strength of its S1Material (sigma_y, sigma_c, sigma_t), so Y(kappa)
+// = f (Y0 + H kappa); the crack-band stretch has nothing to act on and is ignored, as for a
+// Mohr-Coulomb table that never softens.
 //
 // LinearElasticModel is a ConstitutiveModel that never yields: the reference of the
 // closed-form elastic tests of the engines.
+#include "continuum/kinetic/S1Material.h"
 #include "continuum/models/ConstitutiveModel.h"
 #include "continuum/models/DruckerPragerModel.h"
 #include "continuum/models/MohrCoulombReturnMap.h"
@@ -29,7 +33,7 @@ namespace geocomp::continuum {
 
 /// How a point's material differs from the base material.
 struct MaterialVariant {
-  double cohesion_factor = 1.0; ///< multiplies c(kappa) (Drucker-Prager: Y(kappa))
+  double cohesion_factor = 1.0; ///< multiplies c(kappa) (Drucker-Prager, Nikolaevsky: Y(kappa))
   double softening_scale = 1.0; ///< crack-band stretch s of the softening branches
   bool operator<(const MaterialVariant &o) const
   {
@@ -41,13 +45,15 @@ struct MaterialVariant {
 /// Which model and its parameters (the lead maps the case file's "continuum/material"
 /// section onto this).
 struct MaterialParameters {
-  /// mohr-coulomb | drucker-prager | linear-elastic
+  /// mohr-coulomb | drucker-prager | linear-elastic | nikolaevsky
   std::string model = "mohr-coulomb";
   /// Mohr-Coulomb parameters (E, nu, c/phi/psi(kappa)). Also the source of E, nu for
   /// linear-elastic and of the cone for drucker-prager.
   MohrCoulombParameters mohr_coulomb;
   /// How drucker-prager is fitted to mohr_coulomb.
   DruckerPragerMatching drucker_prager_matching = DruckerPragerMatching::outer_cone;
+  /// S1's material for nikolaevsky (kinetic::NikolaevskyModel; its quasi-static fields only).
+  kinetic::S1Material nikolaevsky;
 };
 
 class MaterialFactory {

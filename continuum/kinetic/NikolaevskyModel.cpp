@@ -11,7 +11,7 @@ using continuum::mandel_identity;
 using continuum::Matrix6;
 
 NikolaevskyModel::NikolaevskyModel(const S1Material &material)
-  : m_((material.validate(), material)), elastic_(material.youngs_modulus, material.poisson_ratio),
+  : m_((material.validate_plasticity(), material)), elastic_(material.youngs_modulus, material.poisson_ratio),
     Y0_(material.static_cohesion()), H_(material.hardening_modulus())
 {
 }

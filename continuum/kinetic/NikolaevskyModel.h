@@ -15,7 +15,10 @@
 // which is non-symmetric unless Lambda = 3 omega (associated flow). At the apex the
 // tangent falls back to 1e-3 D (the perfect-plastic apex tangent is singular).
 // Fracture (S1 eq. (6)) and rate effects are not part of this interface: its history has
-// no clock; see KineticNikolaevsky for the full S1 model.
+// no clock; see KineticNikolaevsky for the full S1 model. Hence only the quasi-static fields
+// of the S1Material are required (validate_plasticity): density, sigma_t and the rate
+// constants may be left unset. Case files select it as continuum/model = nikolaevsky
+// (continuum/driver/Materials.cpp).
 #include "continuum/kinetic/S1Material.h"
 #include "continuum/models/ConstitutiveModel.h"
 

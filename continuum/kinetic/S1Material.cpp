@@ -14,19 +14,24 @@ void require(bool ok, const std::string &field, const std::string &expectation)
 }
 } // namespace
 
-void S1Material::validate() const
+void S1Material::validate_plasticity() const
 {
   require(youngs_modulus > 0.0, "youngs modulus", "a positive value [Pa]");
   require(poisson_ratio > -1.0 && poisson_ratio < 0.5, "poisson ratio", "a value in (-1, 0.5)");
-  require(density > 0.0, "density", "a positive value [kg/m^3]");
   require(yield_stress > 0.0, "yield stress", "a positive value [Pa]");
   require(compressive_strength > yield_stress, "compressive strength",
           "a value above the yield stress (S1: sigma_c > sigma_y)");
-  require(tensile_strength > 0.0, "tensile strength", "a positive value [Pa]");
   require(internal_friction >= 0.0 && omega() < inv_sqrt3, "internal friction",
           "alpha in [0, sqrt(3)) so that uniaxial compression can yield");
   require(dilatancy >= 0.0 && dilatancy < std::sqrt(3.0), "dilatancy", "Lambda in [0, sqrt(3))");
   require(plastic_strain_at_strength > 0.0, "plastic strain at strength", "a positive value");
+}
+
+void S1Material::validate() const
+{
+  validate_plasticity();
+  require(density > 0.0, "density", "a positive value [kg/m^3]");
+  require(tensile_strength > 0.0, "tensile strength", "a positive value [Pa]");
   require(cohesion_rate_gain > 0.0, "cohesion rate gain", "a positive value");
   require(reference_rate > 0.0, "reference rate", "a positive value [1/s]");
   require(tensile_strength * tension_factor() > static_cohesion(), "tensile strength",

@@ -40,6 +40,9 @@ struct S1Material {
 
   /// Throws std::invalid_argument naming the first bad field.
   void validate() const;
+  /// Only the fields of the quasi-static model (E, nu, sigma_y, sigma_c, alpha, Lambda,
+  /// eps_p*): what NikolaevskyModel needs; validate() checks these and the rest.
+  void validate_plasticity() const;
 
   double omega() const { return internal_friction / 3.0; }
   double shear_modulus() const;

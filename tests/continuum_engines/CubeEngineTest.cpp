@@ -139,7 +139,7 @@ TEST(CubeEngine, MidPlaneShowsTheHomogeneousDisplacementAndPlasticStrain)
   // y = L/2 the displacement is u_a = eps_a x_a, and kappa is the same everywhere.
   const MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(10));
   const CubeParameters cp = small_cube(2);
-  CubeEngine cube(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
+  CubeEngine cube(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
   const Response r = ProgramRunner(triaxial(0.01), cube).run();
   const ResponseSample &last = r.samples.back();
   const MidPlaneSample plane = cube.mid_plane();
@@ -155,7 +155,7 @@ TEST(CubeEngine, MidPlaneShowsTheHomogeneousDisplacementAndPlasticStrain)
 TEST(CubeEngine, HomogeneousPlasticCubeEqualsMaterialPointAndPeak)
 {
   const MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(10));
-  CubeEngine cube(small_cube(2), make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
+  CubeEngine cube(small_cube(2), make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
   MaterialPointParameters mpp;
   mpp.substeps_per_advance = 2; // the cube's load steps
   MaterialPointEngine point(std::make_shared<MohrCoulombModel>(m), mpp);
@@ -187,7 +187,7 @@ TEST(CubeEngine, NewtonConvergesQuadraticallyOnPlasticSteps)
   cp.imperfection_cohesion_factor = 0.8;
   MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(5));
   m.cohesion = PiecewiseLinear({0.0, 0.01}, {20e3, 30e3}); // hardening
-  CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
+  CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
   unsigned worst = 0, plastic_steps = 0, quadratic_pairs = 0;
   double worst_order = 10.0;
   const LoadingProgram program = plane_strain(0.006, 0.5);
@@ -240,7 +240,7 @@ TEST(CubeEngine, BBarKeepsHomogeneousStatesAndNewtonsQuadraticRate)
     cp.imperfection_radius = 0.3;
     cp.imperfection_cohesion_factor = 0.8;
     cp.volumetric_integration = integration;
-    CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
+    CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
     const LoadingProgram program = plane_strain(0.006, 0.5); // the runner keeps a reference
     ProgramRunner runner(program, engine);
     double worst_order = 10.0;
@@ -282,8 +282,8 @@ TEST(CubeEngine, UnloadingBranchLeavesTheMainPathUnchanged)
   LoadingProgram plain = triaxial(0.006);
   LoadingProgram branched = plain;
   branched.stages[1].unload_at = {parse_trigger("eps_zz <= -0.003", "test")};
-  CubeEngine a(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
-  CubeEngine b(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
+  CubeEngine a(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
+  CubeEngine b(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
   const Response ra = ProgramRunner(plain, a).run();
   const Response rb = ProgramRunner(branched, b).run();
   ASSERT_EQ(rb.branches.size(), 1u);
@@ -315,7 +315,7 @@ TEST(CubeEngine, PostPeakCurvesOnThreeMeshesWithAndWithoutCrackBand)
       cp.imperfection_cohesion_factor = 0.8;
       cp.regularization = regularization;
       cp.localization_directions = 50;
-      CubeEngine engine(cp, make_material_factory({"mohr-coulomb", softening_material(), {}}), MPI_COMM_WORLD);
+      CubeEngine engine(cp, make_material_factory({"mohr-coulomb", softening_material(), {}, {}}), MPI_COMM_WORLD);
       runs[regularization].push_back(ProgramRunner(program, engine).run());
       const CubeStatistics &st = engine.statistics();
       std::printf("%s %u^3: %u steps, %.2f Newton its/step, %u cut-backs\n", regularization.c_str(), n, st.steps,
@@ -329,7 +329,7 @@ TEST(CubeEngine, PostPeakCurvesOnThreeMeshesWithAndWithoutCrackBand)
       if (tau(r[2].samples[k]) > tau(r[2].samples[peak]))
         peak = k;
     const double tau_peak = tau(r[2].samples[peak]);
-    difference[regularization] = {0.0, 0.0};
+    difference[regularization] = {{0.0, 0.0}};
     for (std::size_t k = peak; k < r[2].samples.size(); ++k)
       for (int m = 0; m < 2; ++m)
         difference[regularization][m] = std::max(difference[regularization][m],
@@ -446,7 +446,7 @@ TEST(CubeEngine, RigidBodyNearNullSpaceSavesKrylovIterations)
     cp.newton_tolerance = 1e-8;
     cp.imperfection_radius = 0.3;
     cp.imperfection_cohesion_factor = 0.8;
-    CubeEngine engine(cp, make_material_factory({"mohr-coulomb", softening_material(), {}}), MPI_COMM_WORLD);
+    CubeEngine engine(cp, make_material_factory({"mohr-coulomb", softening_material(), {}, {}}), MPI_COMM_WORLD);
     ProgramRunner(plane_strain(0.006, 1.0), engine).run();
     const CubeStatistics &st = engine.statistics();
     per_solve[space] = double(st.linear_iterations) / st.newton_iterations;

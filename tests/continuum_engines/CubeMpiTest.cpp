@@ -37,10 +37,10 @@ TEST(CubeEngineMpi, TwoRanksGiveTheResponseOfOne)
 
   Response serial;
   if (rank == 0) {
-    CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_SELF);
+    CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_SELF);
     serial = ProgramRunner(program, engine).run();
   }
-  CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}}), MPI_COMM_WORLD);
+  CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
   const Response parallel = ProgramRunner(program, engine).run();
   if (rank != 0)
     return;
