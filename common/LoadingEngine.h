@@ -41,4 +41,13 @@ public:
   virtual std::unique_ptr<EngineState> read_state(std::istream &in) const;
 };
 
+/// True when a step of dt from `time` is an advance's last: it would reach t_end to within
+/// 1e-9 of the nominal step. The steps' sum misses t_end by round-off (a few ulps of t_end,
+/// more than 1e-12 dt at late times); a tighter test leaves a vanishing extra step, which
+/// an elastic-predictor engine reports as elastic while the material flows.
+inline bool is_last_step(double time, double dt, double t_end, double dt_nominal)
+{
+  return time + dt >= t_end - 1e-9 * (dt_nominal < 0.0 ? -dt_nominal : dt_nominal);
+}
+
 } // namespace geocomp

@@ -224,7 +224,7 @@ void MaterialPointEngine::advance_to(double t_end)
   double dt = dt_nominal;
   unsigned cuts = 0;
   while (time_ < t_end) {
-    const bool last = time_ + dt >= t_end - 1e-12 * std::abs(dt_nominal);
+    const bool last = is_last_step(time_, dt, t_end, dt_nominal);
     const double t = last ? t_end : time_ + dt;
     if (increment(t)) {
       if (cuts > 0)

@@ -786,7 +786,7 @@ void CubeEngine::advance_to(double t_end)
   double dt = dt_nominal;
   unsigned level = 0; // current number of halvings below the nominal step
   while (m.time < t_end) {
-    const bool last = m.time + dt >= t_end - 1e-12 * std::abs(dt_nominal);
+    const bool last = is_last_step(m.time, dt, t_end, dt_nominal);
     const double t = last ? t_end : m.time + dt;
     if (m.solve_step(t)) {
       m.commit();

@@ -75,6 +75,25 @@ TEST(MaterialPointEngine, TriaxialPeakEqualsMohrCoulombClosedForm)
   EXPECT_EQ(r.stage_end_reasons[1], program.stages[1].stop_any[0].text);
 }
 
+TEST(MaterialPointEngine, EverySampleOfAFlowingPointIsFlaggedPlastic)
+{
+  // A sample ends on the advance's last increment. Summed increments miss the sample time
+  // by round-off; a tolerance below that round-off once added a vanishing, elastic extra
+  // increment at about every other sample, which then reported the flowing point as
+  // elastic (state flag 0) and its acoustic tensor as untouched (q = 1).
+  MaterialPointEngine engine(perfect_material());
+  const Response r = ProgramRunner(triaxial_program(), engine).run();
+  const std::size_t kappa = r.extra_index("kappa"), flag = r.extra_index("state_flag");
+  std::size_t flowing = 0;
+  for (std::size_t k = 1; k < r.samples.size(); ++k) {
+    if (!(r.samples[k].extras[kappa] > r.samples[k - 1].extras[kappa]))
+      continue;
+    ++flowing;
+    EXPECT_NE(r.samples[k].extras[flag], 0.0) << "t = " << r.samples[k].time;
+  }
+  EXPECT_GT(flowing, 50u);
+}
+
 TEST(MaterialPointEngine, StressAxesHoldTheirTargets)
 {
   MaterialPointEngine engine(perfect_material());
