@@ -11,7 +11,10 @@
 // (DEM-NOTES section 1), which is why a slot stores $n\times F_t$ and $\delta$, not
 // two torques. A slot whose bodies are apart holds zeros.
 //
-// Pairs are stored with id_i < id_j and the slot vectors act on j. Wall slots are sorted
+// Pairs are stored with i < j in storage (each particle's run of slots is its own, so the
+// passes read i sequentially) and the slot vectors act on j; the history archive and
+// every output (ContactRecord, ContactState) use id_i < id_j instead, flipping the
+// vectors where the two orders differ. Wall slots are sorted
 // by particle index, so each particle's wall contacts are one contiguous range.
 //
 // Laws with rolling or cohesion parts keep a ContactMemory per slot in `pair_memory` /
@@ -29,7 +32,7 @@ namespace geocomp::dem {
 
 struct PairSlot
 {
-  Index i = 0, j = 0;        ///< storage indices; id[i] < id[j]
+  Index i = 0, j = 0;        ///< storage indices, i < j
   double overlap = 0.0;      ///< delta at the last evaluation (0: apart)
   Vec3 shear = Vec3::Zero(); ///< tangential history (xi, or the Mindlin spring force)
   Vec3 force = Vec3::Zero(); ///< total contact force on j

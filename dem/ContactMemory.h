@@ -41,6 +41,17 @@ struct ContactMemory
   bool active() const { return state != 0 || rolling.squaredNorm() != 0.0; }
 };
 
+/// The memory as seen with the pair's roles as given: `keep` returns it unchanged, else
+/// i and j swap and the vectors acting on j (rolling moment, bond anchor) change sign.
+inline ContactMemory oriented(ContactMemory m, bool keep)
+{
+  if (!keep) {
+    m.rolling = -m.rolling;
+    m.bond = -m.bond;
+  }
+  return m;
+}
+
 /// Memory carried across a rebuild, keyed like HistoryEntry.
 struct MemoryEntry
 {

@@ -762,16 +762,19 @@ std::vector<ContactRecord> DemSystem::contacts() const
   const auto& R = store_.radius;
   for (const PairSlot& s : lists_.pairs) {
     if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;  // apart (a bond may pull across a gap)
+    // Reported with i the lower id (the slot's i is the earlier one in storage).
+    const bool keep = store_.id[s.i] < store_.id[s.j];
+    const Index a = keep ? s.i : s.j, b = keep ? s.j : s.i;
     ContactRecord c;
-    c.i = store_.id[s.i];
-    c.j = store_.id[s.j];
-    c.branch = x[s.j] - x[s.i];
+    c.i = store_.id[a];
+    c.j = store_.id[b];
+    c.branch = x[b] - x[a];
     c.normal = c.branch.normalized();
     c.overlap = s.overlap;
-    c.force = s.force;
-    c.normal_force = s.force.dot(c.normal);
-    c.tangential_force = s.force - c.normal_force * c.normal;
-    c.point = x[s.i] + (R[s.i] - 0.5 * s.overlap) * c.normal;
+    c.force = keep ? s.force : Vec3(-s.force);
+    c.normal_force = c.force.dot(c.normal);
+    c.tangential_force = c.force - c.normal_force * c.normal;
+    c.point = x[a] + (R[a] - 0.5 * s.overlap) * c.normal;
     out.push_back(c);
   }
   for (const WallSlot& s : lists_.walls) {
@@ -809,8 +812,11 @@ std::vector<ContactState> DemSystem::export_contact_state() const
     const PairSlot& s = lists_.pairs[c];
     const ContactMemory m = mem ? lists_.pair_memory[c] : ContactMemory{};
     if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0 || m.active()) {
-      out.push_back({false, store_.id[s.i], store_.id[s.j], s.overlap, s.shear, m});
-      listed.push_back(pair_key(store_.id[s.i], store_.id[s.j]));
+      // Exported with i the lower id (the slot's i is the earlier one in storage).
+      const ParticleId a = store_.id[s.i], b = store_.id[s.j];
+      const bool keep = a < b;
+      out.push_back({false, keep ? a : b, keep ? b : a, s.overlap, keep ? s.shear : Vec3(-s.shear), oriented(m, keep)});
+      listed.push_back(pair_key(a, b));
     }
   }
   for (std::size_t c = 0; c < lists_.walls.size(); ++c) {
@@ -848,14 +854,7 @@ void DemSystem::import_contact_state(const std::vector<ContactState>& states)
       const bool keep = c.i < c.j;
       const Vec3 shear = keep ? c.shear : Vec3(-c.shear);
       pairs.push_back({pair_key(c.i, c.j), c.overlap, shear});
-      if (c.memory.active()) {
-        ContactMemory m = c.memory;
-        if (!keep) {
-          m.rolling = -m.rolling;
-          m.bond = -m.bond;
-        }
-        pair_mem.push_back({pair_key(c.i, c.j), m});
-      }
+      if (c.memory.active()) pair_mem.push_back({pair_key(c.i, c.j), oriented(c.memory, keep)});
     }
   }
   search_.import_histories(std::move(pairs), std::move(walls));

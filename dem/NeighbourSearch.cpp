@@ -67,9 +67,11 @@ void NeighbourSearch::archive_memory(const ParticleStore& store, const ContactLi
   wall_memory_archive_.clear();
   if (!lists.with_memory) return;
   for (std::size_t c = 0; c < lists.pair_memory.size(); ++c)
-    if (lists.pair_memory[c].active())
+    if (lists.pair_memory[c].active()) {
+      const PairSlot& s = lists.pairs[c];
       pair_memory_archive_.push_back(
-        {pair_key(store.id[lists.pairs[c].i], store.id[lists.pairs[c].j]), lists.pair_memory[c]});
+        {pair_key(store.id[s.i], store.id[s.j]), oriented(lists.pair_memory[c], store.id[s.i] < store.id[s.j])});
+    }
   for (std::size_t c = 0; c < lists.wall_memory.size(); ++c)
     if (lists.wall_memory[c].active())
       wall_memory_archive_.push_back(
@@ -112,9 +114,10 @@ void NeighbourSearch::archive(const ParticleStore& store, const ContactLists& li
   for (const PairSlot& s : lists.pairs) active += (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0) ? 1 : 0;
   pair_archive_.clear();
   if (pair_archive_.capacity() < active) pair_archive_.reserve(active + active / 16);
-  for (const PairSlot& s : lists.pairs)
+  for (const PairSlot& s : lists.pairs)  // archived as acting on the higher id (see rebuild)
     if (s.overlap > 0.0 || s.shear.squaredNorm() > 0.0)
-      pair_archive_.push_back({pair_key(store.id[s.i], store.id[s.j]), s.overlap, s.shear});
+      pair_archive_.push_back({pair_key(store.id[s.i], store.id[s.j]), s.overlap,
+                               store.id[s.i] < store.id[s.j] ? s.shear : Vec3(-s.shear)});
   std::sort(pair_archive_.begin(), pair_archive_.end());
   wall_archive_.clear();
   for (const WallSlot& s : lists.walls)
@@ -209,16 +212,21 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
     for_each_candidate(Index(a), [&](Index b) {
       if (!listed(Index(a), b)) return;
       PairSlot& s = lists.pairs[k++];
-      const bool keep = id[a] < id[b];  // canonical order: id_i < id_j
-      s.i = keep ? Index(a) : b;
-      s.j = keep ? b : Index(a);
+      // i is the particle earlier in storage (the slots of a particle's run are its own,
+      // so pass A and pass B read i sequentially); the archive holds the vectors acting on
+      // the higher id, flipped here when that is i (IEEE negation is exact).
+      s.i = Index(a);
+      s.j = b;
+      const bool id_order = id[a] < id[b];
       // (4) Carry the history over.
       const HistoryEntry* h = find_pair_history(pair_key(id[a], id[b]));
       s.overlap = h ? h->overlap : 0.0;
-      s.shear = h ? h->shear : Vec3::Zero();
+      s.shear = h ? (id_order ? h->shear : Vec3(-h->shear)) : Vec3::Zero();
       s.force.setZero();
       s.lever.setZero();
-      if (memory) lists.pair_memory[k - 1] = find_memory(pair_memory_archive_, broken_pairs_, pair_key(id[a], id[b]));
+      if (memory)
+        lists.pair_memory[k - 1] =
+          oriented(find_memory(pair_memory_archive_, broken_pairs_, pair_key(id[a], id[b])), id_order);
     });
   }
 

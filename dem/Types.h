@@ -4,9 +4,10 @@
 // quaternion, a stable particle id, a storage index, the canonical key of a contact),
 // and they must mean the same thing everywhere. Conventions (DEM-NOTES section 0):
 // SI units; contact scalars positive in compression (overlap delta > 0 when bodies
-// interpenetrate, normal force F_n > 0 repulsive); a pair (i, j) is stored with
-// id_i < id_j, its normal points from i to j, and every per-contact vector is the one
-// acting on j. A wall is body i of its contacts.
+// interpenetrate, normal force F_n > 0 repulsive); a pair (i, j) is reported and
+// archived with id_i < id_j (in the neighbour lists: i earlier in storage), its normal
+// points from i to j, and every per-contact vector is the one acting on j. A wall is
+// body i of its contacts.
 #pragma once
 
 #include <Eigen/Core>

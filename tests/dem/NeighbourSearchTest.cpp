@@ -14,11 +14,19 @@
 using namespace geocomp::dem;
 
 namespace {
-void make_specimen(DemSystem& sys)
+/// With `reverse_ids`, the same spheres numbered backwards (the id order of nearly every
+/// pair is then the reverse of its storage order, the lists' i < j).
+void make_specimen(DemSystem& sys, bool reverse_ids = false)
 {
   sys.set_contact_model(test::linear_law(1e5, 0.5, 2.0 / 7.0));
   sys.set_friction(0.4);
-  test::fill_box(sys, 6, 0.01, 0.3, 9u, 0.2);
+  if (reverse_ids) {
+    DemSystem ref;
+    test::fill_box(ref, 6, 0.01, 0.3, 9u, 0.2);
+    test::add_renumbered_backwards(sys, ref, 0.01);
+  } else {
+    test::fill_box(sys, 6, 0.01, 0.3, 9u, 0.2);
+  }
   for (std::size_t w = 0; w < 6; ++w) sys.set_wall_velocity(w, 0.05 * sys.wall(w).normal);
   const double m = 4.0 / 3.0 * M_PI * 1e-6 * 2650.0;
   sys.set_time_step(0.1 * std::sqrt(m / 1e5));
@@ -71,6 +79,46 @@ TEST(NeighbourSearch, ContactHistorySurvivesRebuild)
     scale = std::max(scale, c.tangential_force.norm());
   }
   EXPECT_LT(worst, 1e-8 * scale);
+}
+
+TEST(NeighbourSearch, IdOrderOppositeToStorageOrderGivesTheSameMotion)
+{
+  // The lists store a pair with i before j in storage, the archive and the outputs with
+  // the lower id first: with every id reversed, each loaded spring is flipped into and
+  // out of the archive at every rebuild. The motion must be that of the same spheres
+  // numbered forwards (to round-off: the slots are summed in another order).
+  DemSystem fwd, rev;
+  make_specimen(fwd);
+  make_specimen(rev, true);
+  fwd.run(600);
+  rev.run(600);
+  std::size_t reversed = 0;
+  for (const PairSlot& s : rev.contact_lists().pairs)
+    reversed += (rev.particles().id[s.i] > rev.particles().id[s.j] && s.shear.norm() > 0.0) ? 1 : 0;
+  ASSERT_GT(reversed, 50u);
+  ASSERT_GT(rev.n_rebuilds(), 2u);
+  const ParticleId n = ParticleId(fwd.n_particles());
+  double worst = 0.0;
+  for (ParticleId id = 0; id < n; ++id)
+    worst = std::max(worst, (fwd.position(id) - rev.position(n - 1 - id)).norm());
+  EXPECT_LT(worst, 1e-12);  // [m]; spheres of 1 cm that moved about 1 mm
+  double worst_f = 0.0, scale = 0.0;
+  std::size_t matched = 0;
+  std::map<std::pair<ParticleId, ParticleId>, Vec3> ft;
+  for (const ContactRecord& c : fwd.contacts())
+    if (!c.wall) ft[{c.i, c.j}] = c.tangential_force;
+  for (const ContactRecord& c : rev.contacts()) {
+    if (c.wall) continue;
+    ASSERT_LT(c.i, c.j);  // reported with the lower id first
+    // Forward ids of the pair: j is the lower one there, so the force on it is -F_t.
+    auto it = ft.find({n - 1 - c.j, n - 1 - c.i});
+    ASSERT_NE(it, ft.end());
+    worst_f = std::max(worst_f, (it->second + c.tangential_force).norm());
+    scale = std::max(scale, c.tangential_force.norm());
+    ++matched;
+  }
+  EXPECT_GT(matched, 100u);
+  EXPECT_LT(worst_f, 1e-8 * scale);
 }
 
 TEST(NeighbourSearch, ExportedContactStateRestoresTangentialForces)

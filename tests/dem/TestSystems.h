@@ -35,6 +35,16 @@ inline void fill_box(DemSystem& sys, int per_edge, double R, double v_scale, uns
   sys.add_box(Vec3::Zero(), Vec3::Constant(L), mu_wall);
 }
 
+/// The spheres and walls of `ref` (spheres of radius R and density 2650, as fill_box
+/// makes them) added to `sys` with their ids in reverse order: the id order of nearly
+/// every pair is then the reverse of its storage order.
+inline void add_renumbered_backwards(DemSystem& sys, const DemSystem& ref, double R)
+{
+  for (ParticleId id = ParticleId(ref.n_particles()); id-- > 0;)
+    sys.add_sphere(ref.position(id), R, 2650.0, ref.velocity(id), ref.angular_velocity(id));
+  for (std::size_t w = 0; w < ref.n_walls(); ++w) sys.add_wall(ref.wall(w));
+}
+
 /// Positions, velocities, spins and forces by particle id, then (with `contacts`) every
 /// contact's overlap and tangential history: a run's state as raw doubles.
 inline std::vector<double> state_bits(const DemSystem& sys, bool contacts = false)
