@@ -3,9 +3,11 @@
 // Why it exists: deterministic, thread-count independent force accumulation
 // (DEM-NOTES section 5, option 1). Pass A loops over contact slots in parallel; each
 // contact is computed once and writes only its own slot (force on j, lever term
-// $n\times F_t$, overlap, tangential history). Pass B loops over particles and sums the
-// incident slots in ascending slot order through a CSR index. The sum order depends
-// only on the lists, never on the threads, so any thread count gives the same bits.
+// $n\times F_t$, overlap, tangential history). A body's load is the sum of its incident
+// slots in ascending slot order, starting from its weight: an order that depends only on
+// the lists, never on the threads, so any thread count gives the same bits. Most bodies
+// get that sum added up during pass A (LoadScatter.h); the bodies two workers share are
+// gathered in pass B through the CSR index below.
 //
 // Torques from a slot: $T_k = -(R_k - \delta/2)\,(n\times F_t)$ for both bodies
 // (DEM-NOTES section 1), which is why a slot stores $n\times F_t$ and $\delta$, not

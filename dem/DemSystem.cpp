@@ -563,69 +563,100 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
     batched = batched_pairs() && !pairs.empty() && n > 0;
     if (batched) batch = pair_batch_args(law, store_, lists_, mu, dt_h, Track);
   }
+  // Loads are added into the bodies' rows as the slots are computed (LoadScatter.h).
+  const int workers = threads_;
+  scatter_.plan(lists_, n, kBlock, workers, search_.n_builds());
+  LoadRow* const rows = scatter_.rows();
+  const Vec3 g = gravity_;
 
 #pragma omp parallel num_threads(threads_)
   {
-    // Pass A: particle pairs.
 #pragma omp for schedule(static)
-    for (std::int64_t b = 0; b < std::int64_t(nbp); ++b) {
-      double damp = 0.0, fric = 0.0, bond = 0.0;
-      const std::size_t end = std::min(pairs.size(), std::size_t(b + 1) * kBlock);
-      if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
-        if (batched) {
-          const PairBatchLosses l = evaluate_linear_pairs_batched(batch, std::size_t(b) * kBlock, end);
+    for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
+      const Vec3 weight = store_.mass[p] * g;
+      rows[p] = LoadRow{{weight.x(), weight.y(), weight.z(), 0.0}, {0.0, 0.0, 0.0, 0.0}};
+    }
+    // Pass A: particle pairs, worker w's contiguous blocks (LoadScatter::blocks_of).
+#ifdef _OPENMP
+    const int n_threads = omp_get_num_threads(), thread = omp_get_thread_num();
+#else
+    const int n_threads = 1, thread = 0;
+#endif
+    for (int wk = thread; wk < workers; wk += n_threads) {
+      const auto [b_first, b_last] = LoadScatter::blocks_of(wk, workers, nbp);
+      [[maybe_unused]] PairBatchArgs wbatch = batch;
+      wbatch.rows = rows->f;
+      wbatch.row_of = scatter_.targets();
+      wbatch.shared = LoadScatter::kShared;
+      wbatch.junk_row = scatter_.junk_row(wk);
+      // The scalar path's loads of slot c (the kernel adds its own).
+      const auto scatter_pair = [&](std::size_t c) {
+        const PairSlot& s = pairs[c];
+        const std::uint32_t ri = scatter_.row_of(s.i, wk), rj = scatter_.row_of(s.j, wk);
+        scatter_.add_pair(ri, rj, s, R[s.i], R[s.j]);
+        if constexpr (Law::has_rolling) scatter_.add_rolling(ri, rj, pmem[c].rolling);
+      };
+      for (std::int64_t b = std::int64_t(b_first); b < std::int64_t(b_last); ++b) {
+        double damp = 0.0, fric = 0.0, bond = 0.0;
+        const std::size_t end = std::min(pairs.size(), std::size_t(b + 1) * kBlock);
+        if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
+          if (batched) {
+            const PairBatchLosses l = evaluate_linear_pairs_batched(wbatch, std::size_t(b) * kBlock, end);
+            if constexpr (Track) {
+              block_losses_[3 * b] = l.damping;
+              block_losses_[3 * b + 1] = l.friction;
+              block_losses_[3 * b + 2] = 0.0;
+            }
+            continue;
+          }
+        }
+        for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
+          PairSlot& s = pairs[c];
+          const Index i = s.i, j = s.j;
+          const Vec3 d = x[j] - x[i];
+          const double r2 = d.squaredNorm();
+          const double rs = R[i] + R[j];
+          double range = rs;
+          if constexpr (Law::has_cohesion) range += law.reach(R[i] * R[j] / rs);
+          if (r2 >= range * range || r2 == 0.0) {
+            // Apart: the slot holds zeros (written only when it did not already).
+            if (s.overlap != 0.0 || s.shear.squaredNorm() != 0.0) {
+              s.overlap = 0.0;
+              s.shear.setZero();
+              s.force.setZero();
+              s.lever.setZero();
+            }
+            if constexpr (Law::has_memory) separate(pmem[c]);
+            scatter_pair(c);
+            continue;
+          }
+          ContactKinematics k;
+          sphere_sphere_kinematics(k, d, std::sqrt(r2), R[i], R[j], v[i], v[j], w[i], w[j], im[i], im[j]);
+          k.overlap_old = s.overlap;
+          k.dt = dt_h;
+          k.mu = mu;
+          ContactForce f;
+          if constexpr (Law::has_memory) {
+            if constexpr (Law::has_rolling) k.w_rel = w[j] - w[i];
+            f = law.evaluate(k, s.shear, pmem[c]);
+          } else {
+            f = law.evaluate(k, s.shear);
+          }
+          s.force = f.normal * k.normal + f.tangential;
+          s.lever = k.normal.cross(f.tangential);
+          s.overlap = k.overlap;
+          scatter_pair(c);
           if constexpr (Track) {
-            block_losses_[3 * b] = l.damping;
-            block_losses_[3 * b + 1] = l.friction;
-            block_losses_[3 * b + 2] = 0.0;
+            damp += f.damping_loss;
+            fric += f.friction_loss;
+            bond += f.bond_loss;
           }
-          continue;
         }
-      }
-      for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
-        PairSlot& s = pairs[c];
-        const Index i = s.i, j = s.j;
-        const Vec3 d = x[j] - x[i];
-        const double r2 = d.squaredNorm();
-        const double rs = R[i] + R[j];
-        double range = rs;
-        if constexpr (Law::has_cohesion) range += law.reach(R[i] * R[j] / rs);
-        if (r2 >= range * range || r2 == 0.0) {
-          // Apart: the slot holds zeros (written only when it did not already).
-          if (s.overlap != 0.0 || s.shear.squaredNorm() != 0.0) {
-            s.overlap = 0.0;
-            s.shear.setZero();
-            s.force.setZero();
-            s.lever.setZero();
-          }
-          if constexpr (Law::has_memory) separate(pmem[c]);
-          continue;
-        }
-        ContactKinematics k;
-        sphere_sphere_kinematics(k, d, std::sqrt(r2), R[i], R[j], v[i], v[j], w[i], w[j], im[i], im[j]);
-        k.overlap_old = s.overlap;
-        k.dt = dt_h;
-        k.mu = mu;
-        ContactForce f;
-        if constexpr (Law::has_memory) {
-          if constexpr (Law::has_rolling) k.w_rel = w[j] - w[i];
-          f = law.evaluate(k, s.shear, pmem[c]);
-        } else {
-          f = law.evaluate(k, s.shear);
-        }
-        s.force = f.normal * k.normal + f.tangential;
-        s.lever = k.normal.cross(f.tangential);
-        s.overlap = k.overlap;
         if constexpr (Track) {
-          damp += f.damping_loss;
-          fric += f.friction_loss;
-          bond += f.bond_loss;
+          block_losses_[3 * b] = damp;
+          block_losses_[3 * b + 1] = fric;
+          block_losses_[3 * b + 2] = bond;
         }
-      }
-      if constexpr (Track) {
-        block_losses_[3 * b] = damp;
-        block_losses_[3 * b + 1] = fric;
-        block_losses_[3 * b + 2] = bond;
       }
     }
     // Pass A: particle-wall contacts, through the same law.
@@ -692,25 +723,32 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         block_losses_[3 * (nbp + b) + 2] = bond;
       }
     }
-    // Pass B: gather per particle, incident slots in ascending order.
+    // Pass B: a private body's row, or the gather of a shared body's incident slots in
+    // ascending order; then its wall slots.
     const auto& off = lists_.incident_offset;
     const auto& inc = lists_.incident;
     const auto& woff = lists_.wall_offset;
 #pragma omp for schedule(static)
     for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
-      Vec3 f = store_.mass[p] * gravity_;
-      Vec3 t = Vec3::Zero();
+      Vec3 f, t;
       const double Rp = R[p];
-      for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
-        const PairSlot& s = pairs[inc[e] >> 1];
-        // +F on j, -F on i, without a branch on the role; f + (-1 x F) and f - F are the
-        // same IEEE operation (measured: no change in speed against the branch).
-        const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
-        f += sign * s.force;
-        t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
-        if constexpr (Law::has_rolling) {       // M_r on j, -M_r on i
-          if (inc[e] & 1u) t += pmem[inc[e] >> 1].rolling;
-          else t -= pmem[inc[e] >> 1].rolling;
+      if (!scatter_.is_shared(Index(p))) {
+        f = Vec3(rows[p].f[0], rows[p].f[1], rows[p].f[2]);
+        t = Vec3(rows[p].t[0], rows[p].t[1], rows[p].t[2]);
+      } else {
+        f = store_.mass[p] * g;
+        t = Vec3::Zero();
+        for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
+          const PairSlot& s = pairs[inc[e] >> 1];
+          // +F on j, -F on i, without a branch on the role; f + (-1 x F) and f - F are the
+          // same IEEE operation (measured: no change in speed against the branch).
+          const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
+          f += sign * s.force;
+          t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
+          if constexpr (Law::has_rolling) {       // M_r on j, -M_r on i
+            if (inc[e] & 1u) t += pmem[inc[e] >> 1].rolling;
+            else t -= pmem[inc[e] >> 1].rolling;
+          }
         }
       }
       for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
@@ -1094,6 +1132,7 @@ void DemSystem::read_state(std::istream& in)
   binary::get(in, mu_);
   search_.read_state(in);
   binary::get_vector(in, lists_.pairs);
+  scatter_.invalidate();
   binary::get_vector(in, lists_.incident_offset);
   binary::get_vector(in, lists_.incident);
   binary::get_vector(in, lists_.walls);
@@ -1142,7 +1181,7 @@ std::size_t DemSystem::memory_bytes() const
   return store_.memory_bytes() + index_of_.capacity() * sizeof(Index) + lists_.memory_bytes() +
          search_.memory_bytes() + block_losses_.capacity() * sizeof(double) +
          (walls_.capacity() * sizeof(PlaneWall)) + wall_force_old_.capacity() * sizeof(Vec3) +
-         wall_terms_.capacity() * sizeof(WallTerm) +
+         wall_terms_.capacity() * sizeof(WallTerm) + scatter_.memory_bytes() +
          clumps_.memory_bytes();
 }
 

@@ -13,8 +13,10 @@
 // frame invariant).
 //
 // Contact forces are computed once per contact into per-contact slots (pass A, parallel
-// over contacts) and gathered per particle in a fixed order (pass B, parallel over
-// particles), so the same input gives bitwise the same trajectory for any thread count.
+// over contacts) and summed per particle in a fixed order, the slot order: added into the
+// bodies as the slots are computed, or gathered afterwards (pass B) for the bodies two
+// threads' slot ranges share (LoadScatter.h); so the same input gives bitwise the same
+// trajectory for any thread count.
 // The law is a `ContactModel` (std::variant); the step dispatches on it once, and the
 // contact loop is compiled for the concrete law.
 //
@@ -38,6 +40,7 @@
 #include "dem/ClumpSet.h"
 #include "dem/ContactLaw.h"
 #include "dem/ContactLists.h"
+#include "dem/LoadScatter.h"
 #include "dem/EnergyLedger.h"
 #include "dem/Fragment.h"
 #include "dem/NeighbourSearch.h"
@@ -271,6 +274,7 @@ private:
   ClumpSet clumps_;
   NeighbourSearch search_;
   ContactLists lists_;
+  LoadScatter scatter_;
 
   double dt_ = 0.0;
   int threads_ = 1;

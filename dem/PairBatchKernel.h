@@ -6,7 +6,10 @@
 // data-dependent branches per contact: apart/touching, the frame-rotation series, stick/slip).
 // This kernel evaluates four pair slots at once in 256-bit vectors (AVX2), with every
 // branch turned into a lane select, so the unpredictable branches disappear and the
-// divisions and roots of four contacts share one instruction.
+// divisions and roots of four contacts share one instruction. The batches run in three
+// stages (kinematics; normal law and spring rotation; Coulomb cap, outputs and loads),
+// each stage over eight batches before the next, so that the processor overlaps the long
+// dependency chains of independent batches.
 //
 // It is the same law as the scalar path, operation for operation:
 // sphere_sphere_kinematics (ContactKinematics.h), LinearNormal::evaluate,
@@ -23,6 +26,9 @@
 // break the one-definition rule (its alignment of Quaterniond changes with AVX). The
 // caller passes raw arrays (Vec3 arrays are three contiguous doubles per particle) and
 // the slot layout below, which DemSystem.cpp checks against PairSlot with static_asserts.
+//
+// Loads: with `rows`, each slot's force and torques are then added into its two bodies'
+// rows in slot order, exactly as LoadScatter::add_pair does (the same bits as the gather).
 //
 // Availability: `pair_batch_kernel_available()` is true when the kernel was compiled
 // (x86-64 with a compiler that takes -mavx2) and the processor has AVX2; otherwise
@@ -77,6 +83,12 @@ struct PairBatchArgs
   double mu = 0.0;                ///< Coulomb coefficient between particles
   double dt = 0.0;                ///< history increment (0: evaluate without advancing)
   bool track_losses = false;
+  /// Where the slots' loads are added (LoadScatter.h): rows of 8 doubles (force, 0,
+  /// torque, 0; 64-byte aligned), the row of each body (`shared`: this worker's
+  /// `junk_row` instead). No rows: the slots are only written.
+  double* rows = nullptr;
+  const std::uint32_t* row_of = nullptr;
+  std::uint32_t shared = 0, junk_row = 0;
 };
 
 /// Energy dissipated by the slots of one call (summed lane by lane, then over the lanes).

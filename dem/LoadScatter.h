@@ -1,0 +1,117 @@
+// @sect3{The LoadScatter class: contact loads added into the bodies during pass A}
+//
+// Why it exists: the gather of pass B (ContactLists.h) read every pair slot twice, once
+// for each body, and the j side's reads jump through the whole slot array (88-byte slots,
+// a random cache line each; out of the last-level cache at 100 000 spheres). It was a
+// third of the step. Here each slot's loads are added into both bodies as soon as the
+// slot is computed, in slot order, into a row of 8 doubles per body (force, torque; one
+// cache line), so the slots are streamed once.
+//
+// Determinism (DEM-NOTES section 5): the gather summed a body's slots in ascending slot
+// order, starting from its weight $m\,g$. The pair slots are split into W contiguous
+// ranges of blocks, one per worker (W = the thread count; worker w is run by thread
+// w mod T). A body whose slots all fall into one worker's range is *private* to it:
+// that worker adds its slots into the body's row in slot order, starting from $m\,g$,
+// which is the gather's sum, operation for operation. A body with slots in two ranges is
+// *shared*: its slots go to the worker's junk row, and the gather (incident slots in
+// ascending order) computes it after pass A. Every body gets the gather's bits, so the
+// trajectories do not depend on W or on the threads (test `Determinism.*`); the share of
+// shared bodies is the layer where two workers' storage ranges meet (none for W = 1).
+//
+// Slot loads (DEM-NOTES section 1, as pass B): $F_j \mathrel{+}= F$, $F_i \mathrel{-}= F$,
+// $T_k \mathrel{-}= (R_k - \delta/2)\,(n\times F_t)$ for both bodies, the rolling moment
+// $+M_r$ on j and $-M_r$ on i.
+#pragma once
+
+#include "dem/ContactLists.h"
+#include "dem/Types.h"
+
+#include <cstddef>
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace geocomp::dem {
+
+/// A body's summed contact loads, padded to one 64-byte cache line (the kernel adds
+/// 4-double rows).
+struct alignas(64) LoadRow
+{
+  double f[4] = {0.0, 0.0, 0.0, 0.0};
+  double t[4] = {0.0, 0.0, 0.0, 0.0};
+};
+
+class LoadScatter
+{
+public:
+  /// `target[p]` of a shared body.
+  static constexpr std::uint32_t kShared = ~std::uint32_t(0);
+
+  /// Blocks [first, second) of worker w among `workers`, for `n_blocks` blocks.
+  static std::pair<std::size_t, std::size_t> blocks_of(int w, int workers, std::size_t n_blocks)
+  {
+    return {n_blocks * std::size_t(w) / std::size_t(workers), n_blocks * std::size_t(w + 1) / std::size_t(workers)};
+  }
+
+  /// Marks private and shared bodies for these lists, `n` bodies, blocks of `block`
+  /// slots and `workers` workers, unless already planned for the same `generation` (the
+  /// neighbour search's build count) and sizes. Sizes the rows (n bodies + one junk row
+  /// per worker).
+  void plan(const ContactLists& lists, std::size_t n, std::size_t block, int workers, std::uint64_t generation);
+  /// Forgets the plan (the lists were replaced, e.g. read from a checkpoint).
+  void invalidate() { planned_ = false; }
+
+  /// The row body p's slots go to when worker w adds them.
+  std::uint32_t row_of(Index p, int w) const
+  {
+    const std::uint32_t r = target_[p];
+    return r == kShared ? junk_row(w) : r;
+  }
+  std::uint32_t junk_row(int w) const { return std::uint32_t(n_ + std::size_t(w)); }
+  bool is_shared(Index p) const { return target_[p] == kShared; }
+  std::size_t n_shared() const { return n_shared_; }
+
+  LoadRow* rows() { return rows_.data(); }
+  const std::uint32_t* targets() const { return target_.data(); }
+
+  /// The slot's loads into rows ri (body i) and rj (body j), as the gather sums them.
+  void add_pair(std::uint32_t ri, std::uint32_t rj, const PairSlot& s, double R_i, double R_j)
+  {
+    LoadRow& a = rows_[ri];
+    LoadRow& b = rows_[rj];
+    for (int k = 0; k < 3; ++k) {
+      a.f[k] -= s.force[k];
+      b.f[k] += s.force[k];
+    }
+    const double arm_i = R_i - 0.5 * s.overlap, arm_j = R_j - 0.5 * s.overlap;
+    for (int k = 0; k < 3; ++k) {
+      a.t[k] -= arm_i * s.lever[k];
+      b.t[k] -= arm_j * s.lever[k];
+    }
+  }
+  /// The rolling moment of a slot: +M_r on j, -M_r on i (after add_pair, as the gather).
+  void add_rolling(std::uint32_t ri, std::uint32_t rj, const Vec3& m)
+  {
+    for (int k = 0; k < 3; ++k) {
+      rows_[ri].t[k] -= m[k];
+      rows_[rj].t[k] += m[k];
+    }
+  }
+
+  std::size_t memory_bytes() const
+  {
+    return rows_.capacity() * sizeof(LoadRow) + target_.capacity() * sizeof(std::uint32_t);
+  }
+
+private:
+  bool planned_ = false;
+  std::uint64_t generation_ = 0;
+  std::size_t n_ = 0, n_pairs_ = 0, block_ = 0;
+  int workers_ = 0;
+  std::size_t n_shared_ = 0;
+  std::vector<LoadRow> rows_;
+  std::vector<std::uint32_t> target_;
+};
+
+}  // namespace geocomp::dem
