@@ -585,7 +585,7 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
     for (int wk = thread; wk < workers; wk += n_threads) {
       const auto [b_first, b_last] = LoadScatter::blocks_of(wk, workers, nbp);
       [[maybe_unused]] PairBatchArgs wbatch = batch;
-      wbatch.rows = rows->f;
+      wbatch.rows = reinterpret_cast<double*>(rows);  // 8 doubles per row, 64-byte aligned
       wbatch.row_of = scatter_.targets();
       wbatch.shared = LoadScatter::kShared;
       wbatch.junk_row = scatter_.junk_row(wk);
