@@ -77,6 +77,34 @@ PairBatchArgs pair_batch_args(const LinearSpringDashpot& law, const ParticleStor
   return a;
 }
 
+/// Pass A's result of one contact in its slot (pair or wall slot: the same fields).
+template <class Slot>
+inline void store_contact(Slot& s, const ContactKinematics& k, const ContactForce& f)
+{
+  s.force = f.normal * k.normal + f.tangential;
+  s.lever = k.normal.cross(f.tangential);
+  s.overlap = k.overlap;
+}
+
+/// The energy a block of slots dissipated, summed in slot order; `store` writes the
+/// block's three entries (damping, friction, bonds) of the fixed-block reduction.
+struct BlockLosses
+{
+  double damping = 0.0, friction = 0.0, bonds = 0.0;
+  void add(const ContactForce& f)
+  {
+    damping += f.damping_loss;
+    friction += f.friction_loss;
+    bonds += f.bond_loss;
+  }
+  void store(double* block) const
+  {
+    block[0] = damping;
+    block[1] = friction;
+    block[2] = bonds;
+  }
+};
+
 /// q <- exp(dt omega / 2) (x) q with the exact axis-angle quaternion; for the small
 /// angles of DEM steps (theta < 1e-2) a 5th-order series equals sin/cos to round-off.
 inline void rotate_orientation(Quat& q, const Vec3& omega, double dt)
@@ -597,16 +625,12 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         if constexpr (Law::has_rolling) scatter_.add_rolling(ri, rj, pmem[c].rolling);
       };
       for (std::int64_t b = std::int64_t(b_first); b < std::int64_t(b_last); ++b) {
-        double damp = 0.0, fric = 0.0, bond = 0.0;
+        BlockLosses lost;
         const std::size_t end = std::min(pairs.size(), std::size_t(b + 1) * kBlock);
         if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
           if (batched) {
             const PairBatchLosses l = evaluate_linear_pairs_batched(wbatch, std::size_t(b) * kBlock, end);
-            if constexpr (Track) {
-              block_losses_[3 * b] = l.damping;
-              block_losses_[3 * b + 1] = l.friction;
-              block_losses_[3 * b + 2] = 0.0;
-            }
+            if constexpr (Track) BlockLosses{l.damping, l.friction, 0.0}.store(&block_losses_[3 * b]);
             continue;
           }
         }
@@ -642,27 +666,17 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
           } else {
             f = law.evaluate(k, s.shear);
           }
-          s.force = f.normal * k.normal + f.tangential;
-          s.lever = k.normal.cross(f.tangential);
-          s.overlap = k.overlap;
+          store_contact(s, k, f);
           scatter_pair(c);
-          if constexpr (Track) {
-            damp += f.damping_loss;
-            fric += f.friction_loss;
-            bond += f.bond_loss;
-          }
+          if constexpr (Track) lost.add(f);
         }
-        if constexpr (Track) {
-          block_losses_[3 * b] = damp;
-          block_losses_[3 * b + 1] = fric;
-          block_losses_[3 * b + 2] = bond;
-        }
+        if constexpr (Track) lost.store(&block_losses_[3 * b]);
       }
     }
     // Pass A: particle-wall contacts, through the same law.
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < std::int64_t(nbw); ++b) {
-      double damp = 0.0, fric = 0.0, bond = 0.0;
+      BlockLosses lost;
       const std::size_t end = std::min(wslots.size(), std::size_t(b + 1) * kBlock);
       for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
         WallSlot& s = wslots[c];
@@ -695,14 +709,8 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         } else {
           f = law.evaluate(k, s.shear);
         }
-        s.force = f.normal * k.normal + f.tangential;
-        s.lever = k.normal.cross(f.tangential);
-        s.overlap = k.overlap;
-        if constexpr (Track) {
-          damp += f.damping_loss;
-          fric += f.friction_loss;
-          bond += f.bond_loss;
-        }
+        store_contact(s, k, f);
+        if constexpr (Track) lost.add(f);
         // The slot's terms of the wall's record (summed below in slot order): the torque of
         // -F about the wall's point from the contact point on the plane, the servo's stiffness.
         if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;
@@ -717,11 +725,7 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
         kw.r_eff = R[p];
         term.stiffness = law.normal().evaluate(kw).stiffness;
       }
-      if constexpr (Track) {
-        block_losses_[3 * (nbp + b)] = damp;
-        block_losses_[3 * (nbp + b) + 1] = fric;
-        block_losses_[3 * (nbp + b) + 2] = bond;
-      }
+      if constexpr (Track) lost.store(&block_losses_[3 * (nbp + b)]);
     }
     // Pass B: a private body's row, or the gather of a shared body's incident slots in
     // ascending order; then its wall slots.
