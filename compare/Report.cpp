@@ -1,5 +1,7 @@
 #include "compare/Report.h"
 
+#include "compare/JsonString.h"
+
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -24,23 +26,6 @@ std::string format_number(double v)
 }
 
 namespace {
-
-std::string json_string(const std::string &s)
-{
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else
-      out += static_cast<char>(c);
-  }
-  return out + "\"";
-}
 
 std::string html(const std::string &s)
 {

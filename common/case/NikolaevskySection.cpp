@@ -7,7 +7,9 @@
 // source of those numbers) or `custom`; the custom entries are empty by default, required
 // with `custom` and refused with a named row, so that no value is ever silently ignored.
 // The case reader cannot see S1Material (common/ builds without continuum/), hence the
-// checks here are those that need no row: ranges by pattern, sigma_c > sigma_y below.
+// checks here are those that need no row: ranges by pattern, and sigma_c > sigma_y below
+// (common/S1StrengthOrder.h, the rule S1Material::validate_plasticity applies too).
+#include "common/S1StrengthOrder.h"
 #include "common/case/Sections.h"
 
 #include <sstream>
@@ -79,11 +81,11 @@ NikolaevskyParameters parse_nikolaevsky(dealii::ParameterHandler &prm, const Rea
       p.*(e.field) = dealii::Utilities::string_to_double(value);
   }
   prm.leave_subsection();
-  if (custom && !(p.compressive_strength > p.yield_stress)) {
+  if (custom && !s1_strength_above_yield(p.compressive_strength, p.yield_stress)) {
     std::ostringstream got;
     got << p.compressive_strength << " Pa <= yield stress " << p.yield_stress << " Pa";
     r.fail("continuum/nikolaevsky/compressive strength",
-           "expected a value above the yield stress (S1: sigma_c > sigma_y), got " + got.str());
+           std::string("expected ") + s1_strength_expectation + ", got " + got.str());
   }
   return p;
 }

@@ -2,6 +2,7 @@
 
 #include "common/AtomicFile.h"
 #include "common/Tensor.h"
+#include "compare/JsonString.h"
 #include "compare/Metrics.h"
 
 #include <cmath>
@@ -15,6 +16,8 @@ namespace geocomp::calibration {
 namespace fs = std::filesystem;
 
 namespace {
+using compare::json_string;
+
 std::string num(double v, int digits = 10)
 {
   if (!std::isfinite(v))
@@ -44,23 +47,6 @@ void write_text(const fs::path &p, const std::string &text)
 double abscissa(const ResponseSample &s, compare::CurveKind kind)
 {
   return 100.0 * (kind == compare::CurveKind::AxialLateral ? -s.strain(2, 2) : gamma_max(s.strain));
-}
-
-std::string json_string(const std::string &s)
-{
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof b, "\\u%04x", c);
-      out += b;
-    } else
-      out += static_cast<char>(c);
-  }
-  return out + "\"";
 }
 
 std::string html_text(const std::string &s)

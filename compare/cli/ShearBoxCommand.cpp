@@ -10,9 +10,9 @@
 #include "Commands.h"
 
 #include "common/case/CaseParameters.h"
+#include "common/case/ParseParameters.h"
 #include "dem/program/DirectShearBox.h"
 
-#include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
@@ -20,7 +20,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <regex>
 #include <sstream>
 
 namespace geocomp::cli {
@@ -119,43 +118,11 @@ void declare(ParameterHandler& prm)
   prm.leave_subsection();
 }
 
-std::string short_message(const std::string& what)
-{
-  std::string s = what;
-  const auto info = s.find("Additional information:");
-  if (info != std::string::npos) s = s.substr(info + 23);
-  const auto trace = s.find("Stacktrace:");
-  if (trace != std::string::npos) s = s.substr(0, trace);
-  std::string out;
-  for (char c : s)
-    if (!std::isspace(static_cast<unsigned char>(c)) || (!out.empty() && out.back() != ' '))
-      out += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
-  while (!out.empty() && (out.back() == ' ' || out.back() == '-')) out.pop_back();
-  return out;
-}
-
-std::string parameter_in(const std::string& message)
-{
-  static const std::regex named(R"(entry named (.+?) does not match|entry <([^>]*)>|parameter <([^>]*)>)");
-  static const std::regex subsection(R"(subsection <([^>]*)>|No entry with name <([^>]*)>)");
-  std::smatch m;
-  if (std::regex_search(message, m, named)) return m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str();
-  if (std::regex_search(message, m, subsection)) return m[1].matched ? m[1].str() : m[2].str();
-  return "(file)";
-}
-
 ShearBoxCase read_case(const std::string& path)
 {
-  std::ifstream in(path);
-  if (!in) throw CaseError(path, "(file)", "cannot be read: expected a readable .prm shear-box case file");
   ParameterHandler prm;
   declare(prm);
-  try {
-    prm.parse_input(in, path, "", false);
-  } catch (const ExceptionBase& e) {
-    const std::string msg = short_message(e.what());
-    throw CaseError(path, parameter_in(msg), msg);
-  }
+  parse_parameter_text(prm, read_parameter_file(path, ".prm shear-box case file"), path);
   ShearBoxCase c;
   c.file = path;
   c.title = prm.get("title");

@@ -64,44 +64,32 @@ private:
   std::shared_ptr<const ConstitutiveModel> m_;
 };
 
-class MohrCoulombFactory : public MaterialFactory {
+// Mohr-Coulomb and Drucker-Prager alike: three hardening tables (a strength, a friction
+// and a dilatancy) that a variant stretches past the softening start (crack band) and whose
+// strength it scales (imperfection). One class so that both models get the same variants.
+template <class Parameters, class Model>
+class HardeningTablesFactory : public MaterialFactory {
 public:
-  explicit MohrCoulombFactory(MohrCoulombParameters p) : p_(std::move(p)) { p_.validate(); }
+  using Table = PiecewiseLinear Parameters::*;
+  HardeningTablesFactory(Parameters p, Table strength, Table friction, Table dilatancy)
+    : p_(std::move(p)), strength_(strength), friction_(friction), dilatancy_(dilatancy)
+  {
+    p_.validate();
+  }
   std::shared_ptr<const ConstitutiveModel> make(const MaterialVariant &v) const override
   {
-    MohrCoulombParameters q = p_;
-    const double ks = softening_start({&p_.cohesion, &p_.friction_angle});
-    if (v.softening_scale != 1.0 && std::isfinite(ks)) {
-      q.cohesion = stretch_after(q.cohesion, ks, v.softening_scale);
-      q.friction_angle = stretch_after(q.friction_angle, ks, v.softening_scale);
-      q.dilatancy_angle = stretch_after(q.dilatancy_angle, ks, v.softening_scale);
-    }
-    q.cohesion = scaled_values(q.cohesion, v.cohesion_factor);
-    return std::make_shared<MohrCoulombModel>(q);
+    Parameters q = p_;
+    const double ks = softening_start({&(p_.*strength_), &(p_.*friction_)});
+    if (v.softening_scale != 1.0 && std::isfinite(ks))
+      for (const Table t : {strength_, friction_, dilatancy_})
+        q.*t = stretch_after(q.*t, ks, v.softening_scale);
+    q.*strength_ = scaled_values(q.*strength_, v.cohesion_factor);
+    return std::make_shared<Model>(q);
   }
 
 private:
-  MohrCoulombParameters p_;
-};
-
-class DruckerPragerFactory : public MaterialFactory {
-public:
-  explicit DruckerPragerFactory(DruckerPragerParameters p) : p_(std::move(p)) { p_.validate(); }
-  std::shared_ptr<const ConstitutiveModel> make(const MaterialVariant &v) const override
-  {
-    DruckerPragerParameters q = p_;
-    const double ks = softening_start({&p_.strength, &p_.friction});
-    if (v.softening_scale != 1.0 && std::isfinite(ks)) {
-      q.strength = stretch_after(q.strength, ks, v.softening_scale);
-      q.friction = stretch_after(q.friction, ks, v.softening_scale);
-      q.dilatancy = stretch_after(q.dilatancy, ks, v.softening_scale);
-    }
-    q.strength = scaled_values(q.strength, v.cohesion_factor);
-    return std::make_shared<DruckerPragerModel>(q);
-  }
-
-private:
-  DruckerPragerParameters p_;
+  Parameters p_;
+  Table strength_, friction_, dilatancy_;
 };
 
 // S1's quasi-static model: the imperfection scales every strength of the S1 table, hence
@@ -134,10 +122,13 @@ std::shared_ptr<const MaterialFactory> fixed_material(std::shared_ptr<const Cons
 std::shared_ptr<const MaterialFactory> make_material_factory(const MaterialParameters &p)
 {
   if (p.model == "mohr-coulomb")
-    return std::make_shared<MohrCoulombFactory>(p.mohr_coulomb);
+    return std::make_shared<HardeningTablesFactory<MohrCoulombParameters, MohrCoulombModel>>(
+      p.mohr_coulomb, &MohrCoulombParameters::cohesion, &MohrCoulombParameters::friction_angle,
+      &MohrCoulombParameters::dilatancy_angle);
   if (p.model == "drucker-prager")
-    return std::make_shared<DruckerPragerFactory>(
-      DruckerPragerParameters::from_mohr_coulomb(p.mohr_coulomb, p.drucker_prager_matching));
+    return std::make_shared<HardeningTablesFactory<DruckerPragerParameters, DruckerPragerModel>>(
+      DruckerPragerParameters::from_mohr_coulomb(p.mohr_coulomb, p.drucker_prager_matching),
+      &DruckerPragerParameters::strength, &DruckerPragerParameters::friction, &DruckerPragerParameters::dilatancy);
   if (p.model == "linear-elastic")
     return fixed_material(
       std::make_shared<LinearElasticModel>(p.mohr_coulomb.youngs_modulus, p.mohr_coulomb.poisson_ratio));

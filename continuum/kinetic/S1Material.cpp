@@ -1,5 +1,7 @@
 #include "continuum/kinetic/S1Material.h"
 
+#include "common/S1StrengthOrder.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -19,8 +21,8 @@ void S1Material::validate_plasticity() const
   require(youngs_modulus > 0.0, "youngs modulus", "a positive value [Pa]");
   require(poisson_ratio > -1.0 && poisson_ratio < 0.5, "poisson ratio", "a value in (-1, 0.5)");
   require(yield_stress > 0.0, "yield stress", "a positive value [Pa]");
-  require(compressive_strength > yield_stress, "compressive strength",
-          "a value above the yield stress (S1: sigma_c > sigma_y)");
+  require(s1_strength_above_yield(compressive_strength, yield_stress), "compressive strength",
+          s1_strength_expectation);
   require(internal_friction >= 0.0 && omega() < inv_sqrt3, "internal friction",
           "alpha in [0, sqrt(3)) so that uniaxial compression can yield");
   require(dilatancy >= 0.0 && dilatancy < std::sqrt(3.0), "dilatancy", "Lambda in [0, sqrt(3))");

@@ -1,5 +1,6 @@
 #include "continuum/models/DruckerPragerModel.h"
 
+#include "continuum/models/PrincipalUpdate.h"
 #include "continuum/models/ScalarRoot.h"
 #include "continuum/models/SpectralDecomposition.h"
 
@@ -99,10 +100,10 @@ PrincipalReturn DruckerPragerModel::return_principal(const Vector3 &trial,
     return out;
   }
 
-  // Cone: R(dg) = tau_tr - G dg + 3 omega (p_tr - K Lambda dg) - Y, all at kappa_n + dg.
+  // Cone: r(dg) = tau_tr - G dg + 3 omega (p_tr - K Lambda dg) - Y, all at kappa_n + dg.
   // Newton first; a bracketed solve if Newton stalls at a kink of the tables.
   struct Cone {
-    double R, dR, lam, dlam, om;
+    double r, dr, lam, dlam, om;
   };
   auto cone = [&](double dg) {
     const double k = kappa_n + dg;
@@ -116,26 +117,10 @@ PrincipalReturn DruckerPragerModel::return_principal(const Vector3 &trial,
   if (tau_tr > 0.0) {
     double dg = 0.0;
     Cone c = cone(dg);
-    bool converged = false;
-    for (int it = 0; it < 25; ++it) {
-      if (std::abs(c.R) <= 1e-14 * scale) {
-        converged = true;
-        break;
-      }
-      if (c.dR == 0.0)
-        break;
-      const double step = -c.R / c.dR;
-      dg += step;
-      c = cone(dg);
-      ++out.iterations;
-      if (std::abs(step) <= 1e-15 * std::abs(dg) && std::abs(c.R) <= 1e-11 * scale) {
-        converged = true;
-        break;
-      }
-    }
+    bool converged = newton_root(cone, dg, c, scale, out.iterations);
     if (!converged || dg < 0.0) {
       const double guess = out.trial_yield / (G + 3.0 * K * p_.friction(kappa_n) * p_.dilatancy(kappa_n));
-      const ScalarRootResult root = bracketed_root([&](double x) { return -cone(x).R; }, 0.0,
+      const ScalarRootResult root = bracketed_root([&](double x) { return -cone(x).r; }, 0.0,
                                                    -out.trial_yield, guess, 1e-16 * guess,
                                                    1e-15 * scale);
       out.iterations += root.evaluations;
@@ -152,7 +137,7 @@ PrincipalReturn DruckerPragerModel::return_principal(const Vector3 &trial,
       out.multipliers = Eigen::Vector2d(dg, 0.0);
       out.region = ReturnRegion::plane;
       // d dg / d s_tr_j = -(1/R') (s_tr_j / (2 tau_tr) + omega)
-      const Vector3 ddg = -(s_tr / (2.0 * tau_tr) + Vector3::Constant(c.om)) / c.dR;
+      const Vector3 ddg = -(s_tr / (2.0 * tau_tr) + Vector3::Constant(c.om)) / c.dr;
       const Matrix3 Pdev = Matrix3::Identity() - Matrix3::Constant(1.0 / 3.0);
       out.dstress_dtrial = (1.0 - a) * Pdev - (G / tau_tr) * s_tr * ddg.transpose() +
                            (G * dg / (2.0 * tau_tr * tau_tr * tau_tr)) * s_tr * s_tr.transpose() +
@@ -183,23 +168,7 @@ PrincipalReturn DruckerPragerModel::return_principal(const Vector3 &trial,
   const double r0 = a.r;
   if (!(r0 > 0.0))
     throw ReturnMapFailure("Drucker-Prager return: neither cone nor apex admissible");
-  bool converged = false;
-  for (int it = 0; it < 25; ++it) {
-    if (std::abs(a.r) <= 1e-14 * scale) {
-      converged = true;
-      break;
-    }
-    if (a.dr == 0.0)
-      break;
-    const double step = -a.r / a.dr;
-    dk += step;
-    a = apex(dk);
-    ++out.iterations;
-    if (std::abs(step) <= 1e-15 * std::abs(dk) && std::abs(a.r) <= 1e-11 * scale) {
-      converged = true;
-      break;
-    }
-  }
+  const bool converged = newton_root(apex, dk, a, scale, out.iterations);
   if (!converged || dk < 0.0) {
     const double guess = r0 / (K * std::max(a.lam, p_.apex_min_dilatancy));
     const ScalarRootResult root = bracketed_root([&](double x) { return -apex(x).r; }, 0.0, -r0,
@@ -219,27 +188,9 @@ PrincipalReturn DruckerPragerModel::return_principal(const Vector3 &trial,
 
 MaterialPointUpdate DruckerPragerModel::update(const Vector6 &total_strain,
                                                const PlasticHistory &old) const {
-  const Vector6 trial_strain = total_strain - old.plastic_strain;
-  const SortedSpectrum spec = sorted_spectrum(from_mandel(trial_strain));
-  const Matrix3 D_hat = elastic_.principal_stiffness();
-  const PrincipalReturn ret = return_principal(D_hat * spec.values, old.kappa);
-
-  MaterialPointUpdate u;
-  u.region = ret.region;
-  u.trial_yield_value = ret.trial_yield;
-  u.local_iterations = ret.iterations;
-  u.history = old;
-  if (ret.region == ReturnRegion::elastic) {
-    u.stress = elastic_.stiffness() * trial_strain;
-    u.tangent = elastic_.stiffness();
-    return u;
-  }
-  u.stress = assemble_from_principal(ret.stress, spec.vectors);
-  u.tangent = isotropic_function_tangent(spec.vectors, spec.values, ret.stress,
-                                         ret.dstress_dtrial * D_hat);
-  u.history.plastic_strain = total_strain - elastic_.compliance() * u.stress;
-  u.history.kappa = old.kappa + ret.delta_kappa;
-  return u;
+  return principal_space_update(elastic_, total_strain, old, [this](const Vector3 &trial, double kappa_n) {
+    return return_principal(trial, kappa_n);
+  });
 }
 
 Matrix6 DruckerPragerModel::continuum_tangent(const Vector6 &stress, double kappa) const {

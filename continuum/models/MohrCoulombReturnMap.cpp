@@ -188,23 +188,7 @@ bool MohrCoulombReturnMap::return_to_apex(const Vector3 &trial, double kappa_n,
   const double r0 = a.r;
   if (!(r0 > 0.0))
     return false; // the trial pressure is below the apex: not an apex return
-  bool converged = false;
-  for (int it = 0; it < 25; ++it) {
-    if (std::abs(a.r) <= 1e-14 * scale) {
-      converged = true;
-      break;
-    }
-    if (a.dr == 0.0)
-      break;
-    const double step = -a.r / a.dr;
-    dk += step;
-    a = evaluate(dk);
-    ++out.iterations;
-    if (std::abs(step) <= 1e-15 * std::abs(dk) && std::abs(a.r) <= 1e-11 * scale) {
-      converged = true;
-      break;
-    }
-  }
+  const bool converged = newton_root(evaluate, dk, a, scale, out.iterations);
   if (!converged || dk < 0.0) {
     const ScalarRootResult root =
         bracketed_root([&](double d) { return -evaluate(d).r; }, 0.0, -r0,

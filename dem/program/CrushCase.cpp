@@ -1,11 +1,9 @@
 #include "dem/program/CrushCase.h"
 
-#include <deal.II/base/exceptions.h>
+#include "common/case/ParseParameters.h"
+
 #include <deal.II/base/parameter_handler.h>
 
-#include <cctype>
-#include <fstream>
-#include <regex>
 #include <sstream>
 
 namespace geocomp::dem {
@@ -89,50 +87,13 @@ void declare(ParameterHandler &prm)
   prm.leave_subsection();
 }
 
-/// The entry a ParameterHandler message is about, or "(file)".
-std::string parameter_in(const std::string &message)
-{
-  static const std::regex named(R"(entry named (.+?) does not match|entry <([^>]*)>|parameter <([^>]*)>)");
-  static const std::regex subsection(R"(subsection <([^>]*)>|No entry with name <([^>]*)>)");
-  std::smatch m;
-  if (std::regex_search(message, m, named))
-    return m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str();
-  if (std::regex_search(message, m, subsection))
-    return m[1].matched ? m[1].str() : m[2].str();
-  return "(file)";
-}
-
-std::string short_message(const std::string &what)
-{
-  std::string s = what;
-  const auto info = s.find("Additional information:");
-  if (info != std::string::npos)
-    s = s.substr(info + 23);
-  const auto trace = s.find("Stacktrace:");
-  if (trace != std::string::npos)
-    s = s.substr(0, trace);
-  std::string out;
-  for (char c : s)
-    if (!std::isspace(static_cast<unsigned char>(c)) || (!out.empty() && out.back() != ' '))
-      out += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
-  while (!out.empty() && (out.back() == ' ' || out.back() == '-'))
-    out.pop_back();
-  return out;
-}
-
 } // namespace
 
 CrushCase parse_crush_case(const std::string &text, const std::string &path)
 {
   ParameterHandler prm;
   declare(prm);
-  std::istringstream in(text);
-  try {
-    prm.parse_input(in, path, "", false);
-  } catch (const ExceptionBase &e) {
-    const std::string msg = short_message(e.what());
-    throw CaseError(path, parameter_in(msg), msg);
-  }
+  parse_parameter_text(prm, text, path);
   auto fail = [&](const std::string &parameter, const std::string &expectation) {
     throw CaseError(path, parameter, expectation);
   };
@@ -227,12 +188,7 @@ CrushCase parse_crush_case(const std::string &text, const std::string &path)
 
 CrushCase read_crush_case(const std::string &path)
 {
-  std::ifstream in(path);
-  if (!in)
-    throw CaseError(path, "(file)", "cannot be read: expected a readable .prm crush case file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_crush_case(text.str(), path);
+  return parse_crush_case(read_parameter_file(path, ".prm crush case file"), path);
 }
 
 std::string describe_crush_parameters()

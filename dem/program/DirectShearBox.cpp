@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 namespace geocomp::dem {
@@ -28,6 +29,22 @@ Vec3 member_centroid(const std::vector<ClumpMember>& m)
     w += v;
   }
   return c / w;
+}
+
+// The loading and the rest under sigma_n both end once their state held at the end of
+// five chunks in a row, or after max_time of DEM time; one loop so that both end by the
+// same rule. `run_chunk` runs one chunk of chunk_steps steps and says whether it held.
+constexpr std::size_t chunk_steps = 200;
+
+void run_until_held(const DemSystem& sys, const std::function<bool()>& run_chunk, double max_time,
+                    const char* phase, const DirectShearBox::Progress& progress)
+{
+  const double t0 = sys.time();
+  int held = 0;  // consecutive chunks ending with the state held
+  while (held < 5 && sys.time() - t0 < max_time) {
+    held = run_chunk() ? held + 1 : 0;
+    if (progress) progress(phase, (sys.time() - t0) / max_time);
+  }
 }
 
 }  // namespace
@@ -199,13 +216,10 @@ void DirectShearBox::prepare(const Progress& progress)
   load_lid(target_load(), p_.load_max_time, progress);
   // Rest under sigma_n with the dynamics of the shear (loaded lid, no local damping).
   sys_->set_local_damping(0.0);
-  const std::size_t chunk = 200;
-  const double t_rest = sys_->time();
-  int held = 0;
   sys_->set_wall_velocity(lid(), Vec3::Zero());
   box_released_ = p_.upper_box_free;  // the gap screws are backed off: the box is carried
-  while (held < 5 && sys_->time() - t_rest < p_.rest_max_time) {
-    for (std::size_t s = 0; s < chunk; ++s) {
+  run_until_held(*sys_, [&] {
+    for (std::size_t s = 0; s < chunk_steps; ++s) {
       drive_lid();
       drive_box();
       sys_->step();
@@ -213,9 +227,8 @@ void DirectShearBox::prepare(const Progress& progress)
     const EnergyLedger e = sys_->energy();
     info_.rest_kinetic_ratio = e.kinetic() / std::max(e.elastic(), 1e-300);
     info_.load_error = std::abs(sys_->wall(lid()).force.z() / (target_load() + p_.lid_weight) - 1.0);
-    held = info_.rest_kinetic_ratio < p_.rest_ratio && info_.load_error < p_.load_tolerance ? held + 1 : 0;
-    if (progress) progress("rest", (sys_->time() - t_rest) / p_.rest_max_time);
-  }
+    return info_.rest_kinetic_ratio < p_.rest_ratio && info_.load_error < p_.load_tolerance;
+  }, p_.rest_max_time, "rest", progress);
   info_.rest_lid_speed = std::abs(sys_->wall(lid()).velocity.z());
   info_.void_ratio = void_ratio();
   info_.time_step = dt_;
@@ -225,15 +238,11 @@ void DirectShearBox::prepare(const Progress& progress)
 void DirectShearBox::load_lid(double load, double max_time, const Progress& progress)
 {
   servo_target_ = load;
-  const std::size_t chunk = 200;
-  const double t_load = sys_->time();
-  int held = 0;  // consecutive chunks ending within the load tolerance
-  while (held < 5 && sys_->time() - t_load < max_time) {
-    run_servo(chunk);
+  run_until_held(*sys_, [&] {
+    run_servo(chunk_steps);
     info_.load_error = std::abs(sys_->wall(lid()).force.z() / load - 1.0);
-    held = info_.load_error < p_.load_tolerance ? held + 1 : 0;
-    if (progress) progress("load", (sys_->time() - t_load) / max_time);
-  }
+    return info_.load_error < p_.load_tolerance;
+  }, max_time, "load", progress);
 }
 
 void DirectShearBox::set_friction(bool preparation)
