@@ -388,62 +388,55 @@ void DemSystem::prepare()
   }
 }
 
-double DemSystem::kick(double dt)
+template <class Body>
+std::pair<double, double> DemSystem::sweep_particles(Body body)
 {
   const std::size_t n = store_.size();
   const std::size_t nb = n_blocks(n);
-  const double lambda = local_damping_;
-  block_losses_.assign(nb, 0.0);
+  block_losses_.assign(2 * nb, 0.0);
 #pragma omp parallel for schedule(static) num_threads(threads_)
   for (std::int64_t b = 0; b < std::int64_t(nb); ++b) {
-    double loss = 0.0;
+    double sum = 0.0, max = 0.0;
     const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
-    for (std::size_t p = std::size_t(b) * kBlock; p < end; ++p) {
-      Vec3 f = store_.force[p], t = store_.torque[p];
-      if (lambda > 0.0 && store_.inv_mass[p] != 0.0)
-        loss += 0.5 * dt * (local_damping(f, store_.v[p], lambda) + local_damping(t, store_.omega[p], lambda));
-      store_.v[p] += (0.5 * dt * store_.inv_mass[p]) * f;
-      store_.omega[p] += (0.5 * dt * store_.inv_inertia[p]) * t;
-    }
-    block_losses_[b] = loss;
+    for (std::size_t p = std::size_t(b) * kBlock; p < end; ++p) body(p, sum, max);
+    block_losses_[2 * b] = sum;
+    block_losses_[2 * b + 1] = max;
   }
+  double sum = 0.0, max = 0.0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    sum += block_losses_[2 * b];
+    max = std::max(max, block_losses_[2 * b + 1]);
+  }
+  return {sum, max};
+}
+
+GEOCOMP_CONTACT_KERNEL double DemSystem::kick_particle(std::size_t p, double dt)  // inlined in the three hot loops
+{
+  const double lambda = local_damping_;
+  Vec3 f = store_.force[p], t = store_.torque[p];
   double loss = 0.0;
-  for (double l : block_losses_) loss += l;
+  if (lambda > 0.0 && store_.inv_mass[p] != 0.0)
+    loss = 0.5 * dt * (local_damping(f, store_.v[p], lambda) + local_damping(t, store_.omega[p], lambda));
+  store_.v[p] += (0.5 * dt * store_.inv_mass[p]) * f;
+  store_.omega[p] += (0.5 * dt * store_.inv_inertia[p]) * t;
   return loss;
+}
+
+double DemSystem::kick(double dt)
+{
+  return sweep_particles([&](std::size_t p, double& loss, double&) { loss += kick_particle(p, dt); }).first;
 }
 
 double DemSystem::kick_drift(double dt)
 {
-  const std::size_t n = store_.size();
-  const std::size_t nb = n_blocks(n);
-  const double lambda = local_damping_;
   const std::vector<Vec3>& x_ref = search_.reference_positions();
-  block_losses_.assign(2 * nb, 0.0);
-#pragma omp parallel for schedule(static) num_threads(threads_)
-  for (std::int64_t b = 0; b < std::int64_t(nb); ++b) {
-    double loss = 0.0, max_d2 = 0.0;
-    const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
-    for (std::size_t p = std::size_t(b) * kBlock; p < end; ++p) {
-      Vec3 f = store_.force[p], t = store_.torque[p];
-      if (lambda > 0.0 && store_.inv_mass[p] != 0.0)
-        loss += 0.5 * dt * (local_damping(f, store_.v[p], lambda) + local_damping(t, store_.omega[p], lambda));
-      const Vec3 v = store_.v[p] + (0.5 * dt * store_.inv_mass[p]) * f;
-      const Vec3 w = store_.omega[p] + (0.5 * dt * store_.inv_inertia[p]) * t;
-      store_.v[p] = v;
-      store_.omega[p] = w;
-      const Vec3 x = store_.x[p] + dt * v;
-      store_.x[p] = x;
-      rotate_orientation(store_.orientation[p], w, dt);
-      max_d2 = std::max(max_d2, (x - x_ref[p]).squaredNorm());
-    }
-    block_losses_[2 * b] = loss;
-    block_losses_[2 * b + 1] = max_d2;
-  }
-  double loss = 0.0, max_d2 = 0.0;
-  for (std::size_t b = 0; b < nb; ++b) {
-    loss += block_losses_[2 * b];
-    max_d2 = std::max(max_d2, block_losses_[2 * b + 1]);
-  }
+  const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) {
+    loss += kick_particle(p, dt);
+    const Vec3 x = store_.x[p] + dt * store_.v[p];
+    store_.x[p] = x;
+    rotate_orientation(store_.orientation[p], store_.omega[p], dt);
+    max_d2 = std::max(max_d2, (x - x_ref[p]).squaredNorm());
+  });
   losses_.dissipated_local += loss;
   return max_d2;
 }
@@ -451,34 +444,19 @@ double DemSystem::kick_drift(double dt)
 double DemSystem::drift_overdamped(double dt)
 {
   // S0 "Aristotelian" packing dynamics: v = F / gamma with gamma = m / (beta dt).
-  const std::size_t n = store_.size();
-  const std::size_t nb = n_blocks(n);
   const double mobility = overdamped_ * dt;
   const std::vector<Vec3>& x_ref = search_.reference_positions();
-  block_losses_.assign(2 * nb, 0.0);
-#pragma omp parallel for schedule(static) num_threads(threads_)
-  for (std::int64_t b = 0; b < std::int64_t(nb); ++b) {
-    double loss = 0.0, max_d2 = 0.0;
-    const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
-    for (std::size_t p = std::size_t(b) * kBlock; p < end; ++p) {
-      if (store_.inv_mass[p] != 0.0) {  // kinematic particles keep their set velocity
-        store_.v[p] = (mobility * store_.inv_mass[p]) * store_.force[p];
-        store_.omega[p] = (mobility * store_.inv_inertia[p]) * store_.torque[p];
-        loss += dt * (store_.force[p].dot(store_.v[p]) + store_.torque[p].dot(store_.omega[p]));
-      }
-      const Vec3 x = store_.x[p] + dt * store_.v[p];
-      store_.x[p] = x;
-      rotate_orientation(store_.orientation[p], store_.omega[p], dt);
-      max_d2 = std::max(max_d2, (x - x_ref[p]).squaredNorm());
+  const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) {
+    if (store_.inv_mass[p] != 0.0) {  // kinematic particles keep their set velocity
+      store_.v[p] = (mobility * store_.inv_mass[p]) * store_.force[p];
+      store_.omega[p] = (mobility * store_.inv_inertia[p]) * store_.torque[p];
+      loss += dt * (store_.force[p].dot(store_.v[p]) + store_.torque[p].dot(store_.omega[p]));
     }
-    block_losses_[2 * b] = loss;
-    block_losses_[2 * b + 1] = max_d2;
-  }
-  double loss = 0.0, max_d2 = 0.0;
-  for (std::size_t b = 0; b < nb; ++b) {
-    loss += block_losses_[2 * b];
-    max_d2 = std::max(max_d2, block_losses_[2 * b + 1]);
-  }
+    const Vec3 x = store_.x[p] + dt * store_.v[p];
+    store_.x[p] = x;
+    rotate_orientation(store_.orientation[p], store_.omega[p], dt);
+    max_d2 = std::max(max_d2, (x - x_ref[p]).squaredNorm());
+  });
   losses_.dissipated_local += loss;
   return max_d2;
 }
@@ -532,9 +510,13 @@ void DemSystem::step()
   moved2_ = max_d2;
   for (PlaneWall& w : walls_) w.point += dt_ * w.velocity;
   if (rebuild_requested_ || search_.needs_rebuild(with_growth(max_d2, radius_growth_), walls_)) rebuild();
-  compute_forces(dt_);
-  if (overdamped_ == 0.0) losses_.dissipated_local += kick(dt_);
-  if (!clumps_.empty()) kick_clumps(dt_);
+  if (overdamped_ == 0.0 && clumps_.empty()) {
+    losses_.dissipated_local += compute_forces(dt_, dt_);  // with the closing half kick
+  } else {
+    compute_forces(dt_);
+    if (overdamped_ == 0.0) losses_.dissipated_local += kick(dt_);
+    if (!clumps_.empty()) kick_clumps(dt_);
+  }
 
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     PlaneWall& w = walls_[k];
@@ -554,19 +536,20 @@ void DemSystem::run(std::size_t n)
 
 // @sect4{Contact forces: pass A per contact, pass B per particle}
 
-void DemSystem::compute_forces(double dt_history)
+double DemSystem::compute_forces(double dt_history, double kick_dt)
 {
-  std::visit(
+  const double kick_loss = std::visit(
     [&](const auto& law) {
-      if (track_energy_) compute_forces_with<std::decay_t<decltype(law)>, true>(law, dt_history);
-      else compute_forces_with<std::decay_t<decltype(law)>, false>(law, dt_history);
+      if (track_energy_) return compute_forces_with<std::decay_t<decltype(law)>, true>(law, dt_history, kick_dt);
+      return compute_forces_with<std::decay_t<decltype(law)>, false>(law, dt_history, kick_dt);
     },
     model_);
   if (!clumps_.empty()) gather_clump_loads();
+  return kick_loss;
 }
 
 template <class Law, bool Track>
-void DemSystem::compute_forces_with(const Law& law, double dt_h)
+double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_dt)
 {
   const auto& x = store_.x;
   const auto& v = store_.v;
@@ -578,7 +561,9 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
   const std::size_t n = store_.size();
   const std::size_t nbp = n_blocks(pairs.size());
   const std::size_t nbw = n_blocks(wslots.size());
+  const std::size_t nb_particles = n_blocks(n);
   if constexpr (Track) block_losses_.assign(3 * (nbp + nbw), 0.0);
+  kick_losses_.assign(nb_particles, 0.0);
   wall_terms_.resize(wslots.size());
   const double mu = mu_;
   [[maybe_unused]] auto& pmem = lists_.pair_memory;
@@ -727,44 +712,55 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
       }
       if constexpr (Track) lost.store(&block_losses_[3 * (nbp + b)]);
     }
-    // Pass B: a private body's row, or the gather of a shared body's incident slots in
-    // ascending order; then its wall slots.
+    // Pass B1: the gather of each shared body's incident slots in ascending order, from
+    // its weight, into its row (the shared bodies, one layer of storage, split evenly).
     const auto& off = lists_.incident_offset;
     const auto& inc = lists_.incident;
     const auto& woff = lists_.wall_offset;
+    const std::vector<Index>& shared = scatter_.shared_bodies();
 #pragma omp for schedule(static)
-    for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
-      Vec3 f, t;
+    for (std::int64_t k = 0; k < std::int64_t(shared.size()); ++k) {
+      const Index p = shared[std::size_t(k)];
       const double Rp = R[p];
-      if (!scatter_.is_shared(Index(p))) {
-        f = Vec3(rows[p].f[0], rows[p].f[1], rows[p].f[2]);
-        t = Vec3(rows[p].t[0], rows[p].t[1], rows[p].t[2]);
-      } else {
-        f = store_.mass[p] * g;
-        t = Vec3::Zero();
-        for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
-          const PairSlot& s = pairs[inc[e] >> 1];
-          // +F on j, -F on i, without a branch on the role; f + (-1 x F) and f - F are the
-          // same IEEE operation (measured: no change in speed against the branch).
-          const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
-          f += sign * s.force;
-          t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
-          if constexpr (Law::has_rolling) {       // M_r on j, -M_r on i
-            if (inc[e] & 1u) t += pmem[inc[e] >> 1].rolling;
-            else t -= pmem[inc[e] >> 1].rolling;
-          }
+      Vec3 f = store_.mass[p] * g, t = Vec3::Zero();
+      for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
+        const PairSlot& s = pairs[inc[e] >> 1];
+        // +F on j, -F on i, without a branch on the role; f + (-1 x F) and f - F are the
+        // same IEEE operation (measured: no change in speed against the branch).
+        const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
+        f += sign * s.force;
+        t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
+        if constexpr (Law::has_rolling) {       // M_r on j, -M_r on i
+          if (inc[e] & 1u) t += pmem[inc[e] >> 1].rolling;
+          else t -= pmem[inc[e] >> 1].rolling;
         }
       }
-      for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
-        const WallSlot& s = wslots[e];
-        f += s.force;
-        t -= (Rp - 0.5 * s.overlap) * s.lever;
-        if constexpr (Law::has_rolling) t += wmem[e].rolling;
+      rows[p] = LoadRow{{f.x(), f.y(), f.z(), 0.0}, {t.x(), t.y(), t.z(), 0.0}};
+    }
+    // Pass B2: every body's row, its wall slots, then the closing half kick when asked for.
+#pragma omp for schedule(static)
+    for (std::int64_t b = 0; b < std::int64_t(nb_particles); ++b) {
+      double kick_loss = 0.0;
+      const std::size_t p_end = std::min(n, std::size_t(b + 1) * kBlock);
+      for (std::size_t p = std::size_t(b) * kBlock; p < p_end; ++p) {
+        const double Rp = R[p];
+        Vec3 f(rows[p].f[0], rows[p].f[1], rows[p].f[2]);
+        Vec3 t(rows[p].t[0], rows[p].t[1], rows[p].t[2]);
+        for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
+          const WallSlot& s = wslots[e];
+          f += s.force;
+          t -= (Rp - 0.5 * s.overlap) * s.lever;
+          if constexpr (Law::has_rolling) t += wmem[e].rolling;
+        }
+        store_.force[p] = f;
+        store_.torque[p] = t;
+        if (kick_dt > 0.0) kick_loss += kick_particle(p, kick_dt);
       }
-      store_.force[p] = f;
-      store_.torque[p] = t;
+      kick_losses_[b] = kick_loss;
     }
   }
+  double kick_loss = 0.0;
+  for (std::size_t b = 0; b < nb_particles; ++b) kick_loss += kick_losses_[b];
 
   if constexpr (Track) {
     for (std::size_t b = 0; b < nbp + nbw; ++b) {
@@ -793,6 +789,7 @@ void DemSystem::compute_forces_with(const Law& law, double dt_h)
     wall.stiffness += term.stiffness;
     ++wall.n_contacts;
   }
+  return kick_loss;
 }
 
 // @sect4{Contacts and energy}

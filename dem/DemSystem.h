@@ -251,9 +251,18 @@ private:
   void invalidate() { ready_ = false; }
   void prepare();
   void rebuild();
-  void compute_forces(double dt_history);
+  /// The contact forces at the current positions; with `kick_dt` > 0 pass B also gives
+  /// each particle the step's closing half kick (step 4) as soon as its load is summed, and
+  /// the return value is that kick's local damping loss (0 otherwise).
+  double compute_forces(double dt_history, double kick_dt = 0.0);
   template <class Law, bool Track>
-  void compute_forces_with(const Law& law, double dt_history);
+  double compute_forces_with(const Law& law, double dt_history, double kick_dt);
+  /// Half a kick of particle p with its current load; returns the local damping loss.
+  double kick_particle(std::size_t p, double dt);
+  /// body(p, sum, max) over all particles in the fixed reduction blocks, statically split
+  /// among the threads; returns the blocks' sums and maxima combined in block order.
+  template <class Body>
+  std::pair<double, double> sweep_particles(Body body);
   double kick(double dt);
   double kick_drift(double dt);
   double drift_overdamped(double dt);
@@ -292,6 +301,7 @@ private:
   std::uint64_t steps_ = 0;
   EnergyLedger losses_{};             // dissipated_* and wall_work accumulate here
   std::vector<double> block_losses_;  // per fixed-size block, summed in order
+  std::vector<double> kick_losses_;   // the fused closing kick's, per particle block
   /// A wall slot's terms of its wall's record, computed in pass A (in parallel) and summed
   /// in slot order afterwards (the same bits as summing them there).
   struct WallTerm

@@ -33,12 +33,12 @@ void LoadScatter::plan(const ContactLists& lists, std::size_t n, std::size_t blo
     }
   }
   // Second pass: a private body's row is its own index.
-  n_shared_ = 0;
+  shared_.clear();
   for (std::size_t p = 0; p < n; ++p) {
-    if (target_[p] == kShared) ++n_shared_;
+    if (target_[p] == kShared) shared_.push_back(Index(p));
     else target_[p] = std::uint32_t(p);
   }
-  rows_.resize(n + std::size_t(workers));
+  rows_.resize(n + kJunkRows * std::size_t(workers));
 }
 
 }  // namespace geocomp::dem

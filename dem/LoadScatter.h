@@ -14,7 +14,8 @@
 // that worker adds its slots into the body's row in slot order, starting from $m\,g$,
 // which is the gather's sum, operation for operation. A body with slots in two ranges is
 // *shared*: its slots go to the worker's junk row, and the gather (incident slots in
-// ascending order) computes it after pass A. Every body gets the gather's bits, so the
+// ascending order) computes it after pass A, the shared bodies split evenly among the
+// threads (they lie in one layer of storage). Every body gets the gather's bits, so the
 // trajectories do not depend on W or on the threads (test `Determinism.*`); the share of
 // shared bodies is the layer where two workers' storage ranges meet (none for W = 1).
 //
@@ -47,6 +48,9 @@ class LoadScatter
 public:
   /// `target[p]` of a shared body.
   static constexpr std::uint32_t kShared = ~std::uint32_t(0);
+  /// Junk rows per worker: the batched kernel sends each lane's loads of shared bodies to
+  /// a row of its own, so consecutive slots do not wait on one row's read-modify-write.
+  static constexpr std::size_t kJunkRows = 8;
 
   /// Blocks [first, second) of worker w among `workers`, for `n_blocks` blocks.
   static std::pair<std::size_t, std::size_t> blocks_of(int w, int workers, std::size_t n_blocks)
@@ -56,8 +60,8 @@ public:
 
   /// Marks private and shared bodies for these lists, `n` bodies, blocks of `block`
   /// slots and `workers` workers, unless already planned for the same `generation` (the
-  /// neighbour search's build count) and sizes. Sizes the rows (n bodies + one junk row
-  /// per worker).
+  /// neighbour search's build count) and sizes. Sizes the rows (n bodies + kJunkRows
+  /// junk rows per worker).
   void plan(const ContactLists& lists, std::size_t n, std::size_t block, int workers, std::uint64_t generation);
   /// Forgets the plan (the lists were replaced, e.g. read from a checkpoint).
   void invalidate() { planned_ = false; }
@@ -68,9 +72,12 @@ public:
     const std::uint32_t r = target_[p];
     return r == kShared ? junk_row(w) : r;
   }
-  std::uint32_t junk_row(int w) const { return std::uint32_t(n_ + std::size_t(w)); }
+  /// The first of worker w's kJunkRows junk rows.
+  std::uint32_t junk_row(int w) const { return std::uint32_t(n_ + kJunkRows * std::size_t(w)); }
   bool is_shared(Index p) const { return target_[p] == kShared; }
-  std::size_t n_shared() const { return n_shared_; }
+  std::size_t n_shared() const { return shared_.size(); }
+  /// The shared bodies, ascending.
+  const std::vector<Index>& shared_bodies() const { return shared_; }
 
   LoadRow* rows() { return rows_.data(); }
   const std::uint32_t* targets() const { return target_.data(); }
@@ -101,7 +108,8 @@ public:
 
   std::size_t memory_bytes() const
   {
-    return rows_.capacity() * sizeof(LoadRow) + target_.capacity() * sizeof(std::uint32_t);
+    return rows_.capacity() * sizeof(LoadRow) + target_.capacity() * sizeof(std::uint32_t) +
+           shared_.capacity() * sizeof(Index);
   }
 
 private:
@@ -109,7 +117,7 @@ private:
   std::uint64_t generation_ = 0;
   std::size_t n_ = 0, n_pairs_ = 0, block_ = 0;
   int workers_ = 0;
-  std::size_t n_shared_ = 0;
+  std::vector<Index> shared_;
   std::vector<LoadRow> rows_;
   std::vector<std::uint32_t> target_;
 };

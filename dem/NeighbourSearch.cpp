@@ -42,6 +42,12 @@ void merge_broken(std::vector<std::uint64_t>& broken, const std::vector<MemoryEn
   std::set_union(broken.begin(), broken.end(), add.begin(), add.end(), std::back_inserter(merged));
   broken.swap(merged);
 }
+
+template <class T>
+void release(std::vector<T>& v)
+{
+  std::vector<T>().swap(v);
+}
 }  // namespace
 
 void NeighbourSearch::set_reach(double r)
@@ -277,6 +283,13 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   for (std::size_t w = 0; w < walls.size(); ++w) wall_ref_[w] = walls[w].point;
   // Unit quaternions drift by round-off only; renormalise once per build.
   for (Quat& q : store.orientation) q.normalize();
+  // The archives served this build only (the next one archives the lists anew): give their
+  // memory back, about 40 bytes per contact, instead of holding it between builds.
+  release(pair_archive_);
+  release(pair_archive_start_);
+  release(wall_archive_);
+  release(pair_memory_archive_);
+  release(wall_memory_archive_);
   ++n_builds_;
   return permuted;
 }

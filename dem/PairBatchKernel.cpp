@@ -30,6 +30,7 @@ inline Pack sqrt4(Pack a) { return Pack(_mm256_sqrt_pd(__m256d(a))); }
 inline Pack max4(Pack a, Pack b) { return select(a < b, b, a); }
 inline Pack abs4(Pack a) { return select(a < 0.0, -a, a); }
 inline bool all(Mask m) { return _mm256_movemask_pd(__m256d(m)) == 0xf; }
+inline bool any(Mask m) { return _mm256_movemask_pd(__m256d(m)) != 0; }
 
 struct P3
 {
@@ -98,10 +99,10 @@ struct Batch
   unsigned char* slot[kLanes];
   std::uint32_t ii[kLanes], jj[kLanes];
   int lanes;
-  // Stage 1: the kinematics.
+  // Stage 1: the kinematics (1a: the geometry; 1b: the velocities).
   Mask touching;
   P3 n, v_t;
-  Pack delta, v_n, m_eff, r_eff, spin, arm_i, arm_j;
+  Pack delta, v_n, m_eff, r_eff, spin, arm_i, arm_j, radius_i, radius_j;
   // Stage 2: the normal law and the spring turned into the tangent plane.
   Pack f_n, elastic, c_t, inv_k_t, k_t;
   P3 xi;
@@ -128,7 +129,7 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
     const std::size_t chunk_slots = end - chunk0 < std::size_t(kChunk * kLanes) ? end - chunk0 : kChunk * kLanes;
     const int n_batches = int((chunk_slots + kLanes - 1) / kLanes);
 
-    // Stage 1: DemSystem pass A's test and sphere_sphere_kinematics.
+    // Stage 1a: DemSystem pass A's test and sphere_sphere_kinematics' geometry.
     for (int b = 0; b < n_batches; ++b) {
       Batch& B = chunk[b];
       const std::size_t c0 = chunk0 + std::size_t(b) * kLanes;
@@ -145,24 +146,32 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
       const Pack rs = Ri + Rj;
       B.touching = (r2 < rs * rs) & (r2 != 0.0);
 
-      // sphere_sphere_kinematics
+      // sphere_sphere_kinematics: the geometry (a root and two divisions in series)
       const Pack r = sqrt4(r2);
       const Pack inv_m = gather1(a.inv_mass, B.ii) + gather1(a.inv_mass, B.jj);
       const Pack w_eff = one / (inv_m * rs);
       B.n = d * (one / r);
       B.delta = rs - r;
-      const Pack li = Ri - 0.5 * B.delta, lj = Rj - 0.5 * B.delta;
+      B.m_eff = w_eff * rs;
+      B.r_eff = Ri * Rj * inv_m * w_eff;
+      // The lever arms R - delta/2; the torque arms of the loads (LoadScatter::add_pair)
+      // are these, or R for an apart slot (it holds overlap 0).
+      B.arm_i = Ri - 0.5 * B.delta;
+      B.arm_j = Rj - 0.5 * B.delta;
+      B.radius_i = Ri;
+      B.radius_j = Rj;
+    }
+    // Stage 1b: sphere_sphere_kinematics, the velocities.
+    for (int b = 0; b < n_batches; ++b) {
+      Batch& B = chunk[b];
+      const Pack li = B.arm_i, lj = B.arm_j;
       const P3 wi = gather3(a.omega, B.ii), wj = gather3(a.omega, B.jj);
       const P3 v_rel = (gather3(a.v, B.jj) - gather3(a.v, B.ii)) - cross(li * wi + lj * wj, B.n);
       B.v_n = dot(v_rel, B.n);
       B.v_t = v_rel - B.v_n * B.n;
-      B.m_eff = w_eff * rs;
-      B.r_eff = Ri * Rj * inv_m * w_eff;
       B.spin = 0.5 * dot(wi + wj, B.n);
-      // The torque arms of the loads (LoadScatter::add_pair): R - delta/2, or R for an
-      // apart slot (it holds overlap 0).
-      B.arm_i = select(B.touching, li, Ri);
-      B.arm_j = select(B.touching, lj, Rj);
+      B.arm_i = select(B.touching, li, B.radius_i);
+      B.arm_j = select(B.touching, lj, B.radius_j);
     }
 
     // Stage 2: LinearNormal::evaluate, LinearTangential's stiffness and damping, and
@@ -237,12 +246,15 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
       const P3 f_trial = (-B.k_t) * xi - B.c_t * v_t;             // S0 eq. (2), developing friction
       const Pack f_max = mu * max4(B.f_n, zero);                  // S0 eq. (2), cap mu_s |F_n|
       const Pack f2 = dot(f_trial, f_trial);
-      const Mask slide = f2 > f_max * f_max;                      // developed friction
-      const P3 f_slide = f_trial * (f_max / sqrt4(f2));
-      const P3 xi_slide = P3{-(f_slide.x + B.c_t * v_t.x), -(f_slide.y + B.c_t * v_t.y), -(f_slide.z + B.c_t * v_t.z)} *
-                          B.inv_k_t;
-      const P3 f_t = select(slide, f_slide, f_trial);
-      const P3 xi_new = select(slide, xi_slide, xi);
+      const Mask slide = (f2 > f_max * f_max) & B.touching;      // developed friction
+      P3 f_t = f_trial, xi_new = xi, xi_slide = xi;
+      if (any(slide)) {  // the root and the division only for a batch with a sliding contact
+        const P3 f_slide = f_trial * (f_max / sqrt4(f2));
+        xi_slide = P3{-(f_slide.x + B.c_t * v_t.x), -(f_slide.y + B.c_t * v_t.y), -(f_slide.z + B.c_t * v_t.z)} *
+                   B.inv_k_t;
+        f_t = select(slide, f_slide, f_trial);
+        xi_new = select(slide, xi_slide, xi);
+      }
 
       // ContactLaw::evaluate and the slot update of pass A; apart slots hold zeros.
       const P3 force = B.f_n * B.n + f_t;
@@ -299,8 +311,8 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
         const __m256d F[kLanes] = {f0, f1, f2v, f3}, TI[kLanes] = {i0, i1, i2, i3}, TJ[kLanes] = {j0, j1, j2, j3};
         for (int l = 0; l < B.lanes; ++l) {
           const std::uint32_t ri = a.row_of[B.ii[l]], rj = a.row_of[B.jj[l]];
-          double* const bi = a.rows + 8 * std::size_t(ri == a.shared ? a.junk_row : ri);
-          double* const bj = a.rows + 8 * std::size_t(rj == a.shared ? a.junk_row : rj);
+          double* const bi = a.rows + 8 * std::size_t(ri == a.shared ? a.junk_row + l : ri);
+          double* const bj = a.rows + 8 * std::size_t(rj == a.shared ? a.junk_row + kLanes + l : rj);
           _mm256_store_pd(bi, _mm256_sub_pd(_mm256_load_pd(bi), F[l]));
           _mm256_store_pd(bi + 4, _mm256_sub_pd(_mm256_load_pd(bi + 4), TI[l]));
           _mm256_store_pd(bj, _mm256_add_pd(_mm256_load_pd(bj), F[l]));

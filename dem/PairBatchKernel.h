@@ -84,8 +84,9 @@ struct PairBatchArgs
   double dt = 0.0;                ///< history increment (0: evaluate without advancing)
   bool track_losses = false;
   /// Where the slots' loads are added (LoadScatter.h): rows of 8 doubles (force, 0,
-  /// torque, 0; 64-byte aligned), the row of each body (`shared`: this worker's
-  /// `junk_row` instead). No rows: the slots are only written.
+  /// torque, 0; 64-byte aligned), the row of each body (`shared`: one of this worker's
+  /// eight junk rows from `junk_row` on, one per lane and side). No rows: the slots are
+  /// only written.
   double* rows = nullptr;
   const std::uint32_t* row_of = nullptr;
   std::uint32_t shared = 0, junk_row = 0;
