@@ -74,8 +74,6 @@ public:
   }
   /// The first of worker w's kJunkRows junk rows.
   std::uint32_t junk_row(int w) const { return std::uint32_t(n_ + kJunkRows * std::size_t(w)); }
-  bool is_shared(Index p) const { return target_[p] == kShared; }
-  std::size_t n_shared() const { return shared_.size(); }
   /// The shared bodies, ascending.
   const std::vector<Index>& shared_bodies() const { return shared_; }
 

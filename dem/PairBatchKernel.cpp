@@ -102,7 +102,7 @@ struct Batch
   // Stage 1: the kinematics (1a: the geometry; 1b: the velocities).
   Mask touching;
   P3 n, v_t;
-  Pack delta, v_n, m_eff, r_eff, spin, arm_i, arm_j, radius_i, radius_j;
+  Pack delta, v_n, m_eff, r_eff, spin, arm_i, arm_j;
   // Stage 2: the normal law and the spring turned into the tangent plane.
   Pack f_n, elastic, c_t, inv_k_t, k_t;
   P3 xi;
@@ -154,12 +154,11 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
       B.delta = rs - r;
       B.m_eff = w_eff * rs;
       B.r_eff = Ri * Rj * inv_m * w_eff;
-      // The lever arms R - delta/2; the torque arms of the loads (LoadScatter::add_pair)
-      // are these, or R for an apart slot (it holds overlap 0).
-      B.arm_i = Ri - 0.5 * B.delta;
-      B.arm_j = Rj - 0.5 * B.delta;
-      B.radius_i = Ri;
-      B.radius_j = Rj;
+      // The lever arms R - delta/2, which are also the torque arms of the loads
+      // (LoadScatter::add_pair); R for an apart slot (it holds overlap 0; stage 1b's
+      // velocities of an apart lane are never stored).
+      B.arm_i = select(B.touching, Ri - 0.5 * B.delta, Ri);
+      B.arm_j = select(B.touching, Rj - 0.5 * B.delta, Rj);
     }
     // Stage 1b: sphere_sphere_kinematics, the velocities.
     for (int b = 0; b < n_batches; ++b) {
@@ -170,8 +169,6 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
       B.v_n = dot(v_rel, B.n);
       B.v_t = v_rel - B.v_n * B.n;
       B.spin = 0.5 * dot(wi + wj, B.n);
-      B.arm_i = select(B.touching, li, B.radius_i);
-      B.arm_j = select(B.touching, lj, B.radius_j);
     }
 
     // Stage 2: LinearNormal::evaluate, LinearTangential's stiffness and damping, and
