@@ -3,6 +3,7 @@
 #include "common/BinaryState.h"
 #include "dem/ContactKinematics.h"
 #include "dem/LegacyState.h"
+#include "dem/ParticleSweepKernel.h"
 #include "dem/TimeStep.h"
 
 #ifdef _OPENMP
@@ -10,6 +11,7 @@
 #endif
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -27,6 +29,13 @@ std::size_t n_blocks(std::size_t n) { return (n + kBlock - 1) / kBlock; }
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "PairBatchKernel reads Vec3 arrays as 3 doubles each");
 static_assert(kBlock % 4 == 0, "batches of four slots start at block starts");
+static_assert(sizeof(WallSlot) == sizeof(PairSlot) && offsetof(WallSlot, wall) == offsetof(PairSlot, i) &&
+                  offsetof(WallSlot, particle) == offsetof(PairSlot, j) &&
+                  offsetof(WallSlot, overlap) == offsetof(PairSlot, overlap) &&
+                  offsetof(WallSlot, shear) == offsetof(PairSlot, shear) &&
+                  offsetof(WallSlot, force) == offsetof(PairSlot, force) &&
+                  offsetof(WallSlot, lever) == offsetof(PairSlot, lever),
+              "the batched kernel reads wall slots with the pair slots' layout");
 
 /// S0's k_n(m*, R*) of a LinearNormal, for the batched kernel.
 double linear_normal_stiffness(const void* part, double m_eff, double r_eff)
@@ -106,7 +115,9 @@ struct BlockLosses
 };
 
 /// q <- exp(dt omega / 2) (x) q with the exact axis-angle quaternion; for the small
-/// angles of DEM steps (theta < 1e-2) a 5th-order series equals sin/cos to round-off.
+/// angles of DEM steps (theta < 1e-2) a 5th-order series equals sin/cos to round-off. The
+/// Hamilton product is written out, in the order the batched sweep (ParticleSweepKernel.h)
+/// repeats.
 inline void rotate_orientation(Quat& q, const Vec3& omega, double dt)
 {
   const Vec3 h = (0.5 * dt) * omega;
@@ -120,8 +131,21 @@ inline void rotate_orientation(Quat& q, const Vec3& omega, double dt)
     c = std::cos(t);
     s = std::sin(t) / t;
   }
-  const Quat dq(c, s * h.x(), s * h.y(), s * h.z());
-  q = dq * q;
+  const double ux = s * h.x(), uy = s * h.y(), uz = s * h.z();
+  const double qx = q.x(), qy = q.y(), qz = q.z(), qw = q.w();
+  q.w() = c * qw - ux * qx - uy * qy - uz * qz;
+  q.x() = c * qx + ux * qw + uy * qz - uz * qy;
+  q.y() = c * qy - ux * qz + uy * qw + uz * qx;
+  q.z() = c * qz + ux * qy - uy * qx + uz * qw;
+}
+
+/// KickDriftArgs::turn_scalar: rotate_orientation of particle p from the sweep's arrays.
+void turn_orientation(const KickDriftArgs& a, std::size_t p)
+{
+  Eigen::Map<Quat> q(a.orientation + 4 * p);
+  Quat turned = q;
+  rotate_orientation(turned, Eigen::Map<const Vec3>(a.omega + 3 * p), a.dt);
+  q = turned;
 }
 
 /// Cundall local damping of one load vector: F_k - lambda |F_k| sign(v_k); returns the
@@ -388,8 +412,8 @@ void DemSystem::prepare()
   }
 }
 
-template <class Body>
-std::pair<double, double> DemSystem::sweep_particles(Body body)
+template <class BlockBody>
+std::pair<double, double> DemSystem::sweep_blocks(BlockBody body)
 {
   const std::size_t n = store_.size();
   const std::size_t nb = n_blocks(n);
@@ -397,8 +421,7 @@ std::pair<double, double> DemSystem::sweep_particles(Body body)
 #pragma omp parallel for schedule(static) num_threads(threads_)
   for (std::int64_t b = 0; b < std::int64_t(nb); ++b) {
     double sum = 0.0, max = 0.0;
-    const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
-    for (std::size_t p = std::size_t(b) * kBlock; p < end; ++p) body(p, sum, max);
+    body(std::size_t(b) * kBlock, std::min(n, std::size_t(b + 1) * kBlock), sum, max);
     block_losses_[2 * b] = sum;
     block_losses_[2 * b + 1] = max;
   }
@@ -408,6 +431,14 @@ std::pair<double, double> DemSystem::sweep_particles(Body body)
     max = std::max(max, block_losses_[2 * b + 1]);
   }
   return {sum, max};
+}
+
+template <class Body>
+std::pair<double, double> DemSystem::sweep_particles(Body body)
+{
+  return sweep_blocks([&](std::size_t begin, std::size_t end, double& sum, double& max) GEOCOMP_SWEEP_BODY {
+    for (std::size_t p = begin; p < end; ++p) body(p, sum, max);
+  });
 }
 
 GEOCOMP_CONTACT_KERNEL double DemSystem::kick_particle(std::size_t p, double dt)  // inlined in the three hot loops
@@ -424,13 +455,31 @@ GEOCOMP_CONTACT_KERNEL double DemSystem::kick_particle(std::size_t p, double dt)
 
 double DemSystem::kick(double dt)
 {
-  return sweep_particles([&](std::size_t p, double& loss, double&) { loss += kick_particle(p, dt); }).first;
+  return sweep_particles([&](std::size_t p, double& loss, double&) GEOCOMP_SWEEP_BODY { loss += kick_particle(p, dt); }).first;
 }
 
 double DemSystem::kick_drift(double dt)
 {
   const std::vector<Vec3>& x_ref = search_.reference_positions();
-  const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) {
+  if (batched_pairs() && store_.size() > 0 && local_damping_ == 0.0 && kick_drift_kernel_available()) {
+    // Four spheres at a time (ParticleSweepKernel.h, the same bits as the loop below).
+    KickDriftArgs args;
+    args.x = store_.x.front().data();
+    args.v = store_.v.front().data();
+    args.omega = store_.omega.front().data();
+    args.orientation = store_.orientation.front().coeffs().data();
+    args.force = store_.force.front().data();
+    args.torque = store_.torque.front().data();
+    args.inv_mass = store_.inv_mass.data();
+    args.inv_inertia = store_.inv_inertia.data();
+    args.x_ref = x_ref.front().data();
+    args.dt = dt;
+    args.turn_scalar = turn_orientation;
+    return sweep_blocks([&](std::size_t begin, std::size_t end, double&, double& max_d2) GEOCOMP_SWEEP_BODY {
+             max_d2 = std::max(max_d2, kick_drift_batched(args, begin, end));
+           }).second;
+  }
+  const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) GEOCOMP_SWEEP_BODY {
     loss += kick_particle(p, dt);
     const Vec3 x = store_.x[p] + dt * store_.v[p];
     store_.x[p] = x;
@@ -446,7 +495,7 @@ double DemSystem::drift_overdamped(double dt)
   // S0 "Aristotelian" packing dynamics: v = F / gamma with gamma = m / (beta dt).
   const double mobility = overdamped_ * dt;
   const std::vector<Vec3>& x_ref = search_.reference_positions();
-  const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) {
+  const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) GEOCOMP_SWEEP_BODY {
     if (store_.inv_mass[p] != 0.0) {  // kinematic particles keep their set velocity
       store_.v[p] = (mobility * store_.inv_mass[p]) * store_.force[p];
       store_.omega[p] = (mobility * store_.inv_inertia[p]) * store_.torque[p];
@@ -572,15 +621,48 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
   // S0's law on an AVX2 processor: four slots at a time (PairBatchKernel.h, same bits).
   [[maybe_unused]] bool batched = false;
   [[maybe_unused]] PairBatchArgs batch;
+  [[maybe_unused]] PairBatchArgs wall_batch;
   if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
     batched = batched_pairs() && !pairs.empty() && n > 0;
     if (batched) batch = pair_batch_args(law, store_, lists_, mu, dt_h, Track);
+    // Wall slots too when every wall is an unbounded plane.
+    const bool planes = std::none_of(walls_.begin(), walls_.end(), [](const PlaneWall& w) { return w.bounded(); });
+    if (batched_pairs() && planes && !wslots.empty()) {
+      wall_batch = pair_batch_args(law, store_, lists_, 0.0, dt_h, Track);
+      wall_batch.slots = reinterpret_cast<unsigned char*>(wslots.data());
+      wall_arrays_.resize(10 * walls_.size());
+      double* const a = wall_arrays_.data();
+      const std::size_t nw = walls_.size();
+      for (std::size_t k = 0; k < nw; ++k)
+        for (int d = 0; d < 3; ++d) {
+          a[3 * k + d] = walls_[k].point[d];
+          a[3 * (nw + k) + d] = walls_[k].normal[d];
+          a[3 * (2 * nw + k) + d] = walls_[k].velocity[d];
+        }
+      for (std::size_t k = 0; k < nw; ++k) a[9 * nw + k] = walls_[k].mu;
+      wall_batch.wall_point = a;
+      wall_batch.wall_normal = a + 3 * nw;
+      wall_batch.wall_velocity = a + 6 * nw;
+      wall_batch.wall_mu = a + 9 * nw;
+    }
   }
   // Loads are added into the bodies' rows as the slots are computed (LoadScatter.h).
   const int workers = threads_;
   scatter_.plan(lists_, n, kBlock, workers, search_.n_builds());
   LoadRow* const rows = scatter_.rows();
   const Vec3 g = gravity_;
+  // The batched closing kick (no local damping; the switch of the batched kernels).
+  ClosingKickArgs closing;
+  if (kick_dt > 0.0 && n > 0 && local_damping_ == 0.0 && batched_pairs() && kick_drift_kernel_available()) {
+    closing.rows = reinterpret_cast<const double*>(rows);
+    closing.force = store_.force.front().data();
+    closing.torque = store_.torque.front().data();
+    closing.v = store_.v.front().data();
+    closing.omega = store_.omega.front().data();
+    closing.inv_mass = store_.inv_mass.data();
+    closing.inv_inertia = store_.inv_inertia.data();
+    closing.dt = kick_dt;
+  }
 
 #pragma omp parallel num_threads(threads_)
   {
@@ -659,14 +741,42 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       }
     }
     // Pass A: particle-wall contacts, through the same law.
+    // The slot's terms of the wall's record (summed below in slot order): the torque of
+    // -F about the wall's point from the contact point on the plane, the servo's stiffness.
+    const auto record_wall_term = [&](std::size_t c) {
+      const WallSlot& s = wslots[c];
+      WallTerm& term = wall_terms_[c];
+      term.recorded = term.touching = false;
+      if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) return;  // apart
+      const PlaneWall& wall = walls_[s.wall];
+      const Index p = s.particle;
+      Vec3 n_w;
+      wall.gap(x[p], n_w);
+      term.recorded = true;
+      const Vec3 xc = x[p] - (R[p] - s.overlap) * n_w;
+      term.torque = (xc - wall.point).cross(-s.force);
+      if (!(s.overlap > 0.0)) return;  // a bond across a gap: force, but no contact
+      term.touching = true;
+      ContactKinematics kw;
+      kw.overlap = s.overlap;
+      kw.m_eff = store_.mass[p];
+      kw.r_eff = R[p];
+      term.stiffness = law.normal().evaluate(kw).stiffness;
+    };
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < std::int64_t(nbw); ++b) {
       BlockLosses lost;
       const std::size_t end = std::min(wslots.size(), std::size_t(b + 1) * kBlock);
+      if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
+        if (wall_batch.wall_point) {  // four slots at a time (PairBatchKernel.h, same bits)
+          const PairBatchLosses l = evaluate_linear_walls_batched(wall_batch, std::size_t(b) * kBlock, end);
+          for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) record_wall_term(c);
+          if constexpr (Track) BlockLosses{l.damping, l.friction, 0.0}.store(&block_losses_[3 * (nbp + b)]);
+          continue;
+        }
+      }
       for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) {
         WallSlot& s = wslots[c];
-        WallTerm& term = wall_terms_[c];
-        term.recorded = term.touching = false;
         const PlaneWall& wall = walls_[s.wall];
         const Index p = s.particle;
         Vec3 n_w;
@@ -696,20 +806,8 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
         }
         store_contact(s, k, f);
         if constexpr (Track) lost.add(f);
-        // The slot's terms of the wall's record (summed below in slot order): the torque of
-        // -F about the wall's point from the contact point on the plane, the servo's stiffness.
-        if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;
-        term.recorded = true;
-        const Vec3 xc = x[p] - (R[p] - s.overlap) * n_w;
-        term.torque = (xc - wall.point).cross(-s.force);
-        if (!(s.overlap > 0.0)) continue;  // a bond across a gap: force, but no contact
-        term.touching = true;
-        ContactKinematics kw;
-        kw.overlap = s.overlap;
-        kw.m_eff = store_.mass[p];
-        kw.r_eff = R[p];
-        term.stiffness = law.normal().evaluate(kw).stiffness;
       }
+      for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) record_wall_term(c);
       if constexpr (Track) lost.store(&block_losses_[3 * (nbp + b)]);
     }
     // Pass B1: the gather of each shared body's incident slots in ascending order, from
@@ -737,12 +835,18 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       }
       rows[p] = LoadRow{{f.x(), f.y(), f.z(), 0.0}, {t.x(), t.y(), t.z(), 0.0}};
     }
-    // Pass B2: every body's row, its wall slots, then the closing half kick when asked for.
+    // Pass B2: every body's row, its wall slots, then the closing half kick when asked for
+    // (four bodies without wall slots at a time in vectors: ParticleSweepKernel.h).
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < std::int64_t(nb_particles); ++b) {
       double kick_loss = 0.0;
       const std::size_t p_end = std::min(n, std::size_t(b + 1) * kBlock);
       for (std::size_t p = std::size_t(b) * kBlock; p < p_end; ++p) {
+        if (closing.rows && p + 4 <= p_end && woff[p] == woff[p + 4]) {
+          close_and_kick4(closing, p);
+          p += 3;
+          continue;
+        }
         const double Rp = R[p];
         Vec3 f(rows[p].f[0], rows[p].f[1], rows[p].f[2]);
         Vec3 t(rows[p].t[0], rows[p].t[1], rows[p].t[2]);

@@ -206,8 +206,9 @@ public:
   /// Accumulate dissipated energy every step (small cost; off by default).
   void set_energy_tracking(bool on) { track_energy_ = on; }
   /// Evaluate the pairs of the linear spring-dashpot law four at a time with the AVX2
-  /// kernel where the processor has it (default on; PairBatchKernel.h). Both paths give
-  /// the same bits; off forces the scalar path (used by the test that compares them).
+  /// kernel where the processor has it (default on; PairBatchKernel.h), and the spheres'
+  /// kick and drift four at a time (ParticleSweepKernel.h). Both paths give the same
+  /// bits; off forces the scalar paths (used by the test that compares them).
   void set_batched_pairs(bool on) { batched_pairs_ = on; }
   bool batched_pairs() const { return batched_pairs_ && pair_batch_kernel_available(); }
   /// Reorder particle storage by cell at rebuilds (default on).
@@ -263,6 +264,9 @@ private:
   /// among the threads; returns the blocks' sums and maxima combined in block order.
   template <class Body>
   std::pair<double, double> sweep_particles(Body body);
+  /// The same blocks, the body called once per block: body(begin, end, sum, max).
+  template <class BlockBody>
+  std::pair<double, double> sweep_blocks(BlockBody body);
   double kick(double dt);
   double kick_drift(double dt);
   double drift_overdamped(double dt);
@@ -311,6 +315,7 @@ private:
     bool recorded = false, touching = false;
   };
   std::vector<WallTerm> wall_terms_;  // one per wall slot
+  std::vector<double> wall_arrays_;   // the walls as the batched kernel reads them
   std::vector<Vec3> wall_force_old_;
 };
 

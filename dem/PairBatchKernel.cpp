@@ -93,16 +93,15 @@ bool pair_batch_kernel_available()
 
 namespace {
 
-/// One batch of four slots between the stages of evaluate_linear_pairs_batched.
+/// One batch of four touching slots between the stages of evaluate_linear_pairs_batched.
 struct Batch
 {
   unsigned char* slot[kLanes];
   std::uint32_t ii[kLanes], jj[kLanes];
   int lanes;
-  // Stage 1: the kinematics (1a: the geometry; 1b: the velocities).
-  Mask touching;
+  // Stage 1: the kinematics (1a: the geometry; 1b: the velocities), the Coulomb coefficient.
   P3 n, v_t;
-  Pack delta, v_n, m_eff, r_eff, spin, arm_i, arm_j;
+  Pack delta, v_n, m_eff, r_eff, spin, arm_i, arm_j, mu;
   // Stage 2: the normal law and the spring turned into the tangent plane.
   Pack f_n, elastic, c_t, inv_k_t, k_t;
   P3 xi;
@@ -112,226 +111,476 @@ struct Batch
 /// processor overlaps their dependency chains (one batch's chain, roots and divisions in
 /// series, is several hundred cycles long).
 constexpr int kChunk = 8;
+/// Touching slots per group: the stages run over one group of kChunk full batches.
+constexpr int kGroup = kChunk * kLanes;
+
+/// The touching slots found by the contact test, in ascending slot order, waiting for the
+/// stages: a ring of kRing entries (the test appends at most one group while less than
+/// one group waits, and writes up to kLanes - 1 spare entries past its end, so kRing =
+/// 4 groups never overwrites a waiting entry). Groups start at multiples of kGroup, so a
+/// batch never wraps. Each entry keeps what the test computed (d, r^2, the radii), so
+/// the stages read it with plain vector loads instead of gathers.
+struct TouchingRing
+{
+  static constexpr int kRing = 4 * kGroup;
+  alignas(32) double dx[kRing + kLanes], dy[kRing + kLanes], dz[kRing + kLanes], r2[kRing + kLanes];
+  alignas(32) double ri[kRing + kLanes], rj[kRing + kLanes];
+  alignas(32) std::uint64_t ij[kRing + kLanes];   ///< i | j << 32
+  alignas(32) std::uint64_t slot[kRing + kLanes]; ///< slot index
+  std::size_t head = 0, tail = 0;                 ///< entries appended, entries taken
+
+  /// Permutations that move the lanes of a 4-bit mask to the front (as 8 x 32-bit indices).
+  static const __m256i* left_pack()
+  {
+    alignas(32) static std::int32_t table[16][8];
+    static const bool made = [] {
+      for (int m = 0; m < 16; ++m) {
+        int k = 0;
+        for (int l = 0; l < kLanes; ++l)
+          if (m & (1 << l)) {
+            table[m][2 * k] = 2 * l;
+            table[m][2 * k + 1] = 2 * l + 1;
+            ++k;
+          }
+        for (; k < kLanes; ++k) table[m][2 * k] = table[m][2 * k + 1] = 0;
+      }
+      return true;
+    }();
+    (void)made;
+    return reinterpret_cast<const __m256i*>(table);
+  }
+
+  static void put(double* dst, __m256i perm, Pack v)
+  {
+    _mm256_storeu_pd(dst, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(__m256d(v)), perm)));
+  }
+  static void put(std::uint64_t* dst, __m256i perm, __m256i v)
+  {
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(dst), _mm256_permutevar8x32_epi32(v, perm));
+  }
+
+  /// Appends the lanes of `mask` (in lane order).
+  void append(int mask, const P3& d, Pack r2_, Pack ri_, Pack rj_, __m256i ij_, __m256i slot_)
+  {
+    const __m256i perm = left_pack()[mask];
+    const std::size_t at = head % kRing;
+    put(dx + at, perm, d.x);
+    put(dy + at, perm, d.y);
+    put(dz + at, perm, d.z);
+    put(r2 + at, perm, r2_);
+    put(ri + at, perm, ri_);
+    put(rj + at, perm, rj_);
+    put(ij + at, perm, ij_);
+    put(slot + at, perm, slot_);
+    const int count = __builtin_popcount(unsigned(mask));
+    for (std::size_t k = kRing; k < at + std::size_t(count); ++k) {  // wrapped past the end
+      dx[k - kRing] = dx[k];
+      dy[k - kRing] = dy[k];
+      dz[k - kRing] = dz[k];
+      r2[k - kRing] = r2[k];
+      ri[k - kRing] = ri[k];
+      rj[k - kRing] = rj[k];
+      ij[k - kRing] = ij[k];
+      slot[k - kRing] = slot[k];
+    }
+    head += std::size_t(count);
+  }
+
+  /// Fills entries [at + count, at + count rounded up to kLanes) with copies of the first
+  /// entry of their batch (spare lanes of the last batch: computed, never stored).
+  void pad(std::size_t at, int count)
+  {
+    for (int k = count; k % kLanes != 0; ++k) {
+      const std::size_t to = at + std::size_t(k), from = at + std::size_t(k - k % kLanes);
+      dx[to] = dx[from];
+      dy[to] = dy[from];
+      dz[to] = dz[from];
+      r2[to] = r2[from];
+      ri[to] = ri[from];
+      rj[to] = rj[from];
+      ij[to] = ij[from];
+      slot[to] = slot[from];
+    }
+  }
+};
+
+void clear_slot(const PairBatchArgs& a, std::size_t c);
+
+/// The contact test of DemSystem pass A on slots [c0, c0 + lanes): appends the touching
+/// ones to the ring and gives the others (apart) zeros, written only when the slot did not
+/// already hold them (as the scalar path).
+void test_batch(const PairBatchArgs& a, std::size_t c0, int lanes, TouchingRing& ring)
+{
+  const PairSlotLayout& L = a.layout;
+  std::uint32_t ii[kLanes], jj[kLanes];
+  for (int l = 0; l < kLanes; ++l) {
+    const unsigned char* s = a.slots + (c0 + std::size_t(l < lanes ? l : 0)) * L.size;  // spare lanes repeat lane 0
+    std::memcpy(&ii[l], s + L.i, sizeof(std::uint32_t));
+    std::memcpy(&jj[l], s + L.j, sizeof(std::uint32_t));
+  }
+  // d = x_j - x_i, r2, R_i + R_j; apart when r2 >= range^2 or r2 == 0.
+  const P3 d = gather3(a.x, jj) - gather3(a.x, ii);
+  const Pack r2 = dot(d, d);
+  const Pack Ri = gather1(a.radius, ii), Rj = gather1(a.radius, jj);
+  const Pack rs = Ri + Rj;
+  const Mask touching = (r2 < rs * rs) & (r2 != 0.0);
+  const int valid = (1 << lanes) - 1;
+  const int mask = _mm256_movemask_pd(__m256d(touching)) & valid;
+  if (mask != 0) {
+    const __m256i ij = _mm256_set_epi64x(std::int64_t(std::uint64_t(ii[3]) | std::uint64_t(jj[3]) << 32),
+                                         std::int64_t(std::uint64_t(ii[2]) | std::uint64_t(jj[2]) << 32),
+                                         std::int64_t(std::uint64_t(ii[1]) | std::uint64_t(jj[1]) << 32),
+                                         std::int64_t(std::uint64_t(ii[0]) | std::uint64_t(jj[0]) << 32));
+    const __m256i slots = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(c0)), _mm256_set_epi64x(3, 2, 1, 0));
+    ring.append(mask, d, r2, Ri, Rj, ij, slots);
+  }
+  for (int apart = valid & ~mask; apart != 0; apart &= apart - 1) clear_slot(a, c0 + std::size_t(__builtin_ctz(unsigned(apart))));
+}
+
+/// The law's constants, the memo of k_n and the losses shared by the groups of one call.
+struct KernelState
+{
+  const PairBatchArgs& a;
+  Pack dt, mu, zero, one;
+  // Memo of S0's k_n(m*, R*) (a pure function): one call per change of (m*, R*).
+  double memo_m = -1.0, memo_r = -1.0, memo_k = 0.0;
+  PairBatchLosses losses;
+};
+
+void law_stages(KernelState& st, Batch* chunk, int n_batches);
+
+/// Stages 1a (after the test) to 3 on `count` <= kGroup touching slots of the ring from
+/// entry `at` (a multiple of kGroup).
+void run_group(KernelState& st, TouchingRing& ring, std::size_t at, int count)
+{
+  const PairBatchArgs& a = st.a;
+  const PairSlotLayout& L = a.layout;
+  const Pack mu = st.mu, one = st.one;
+  Batch chunk[kChunk];
+  ring.pad(at, count);
+  const int n_batches = (count + kLanes - 1) / kLanes;
+
+  // Stage 1a: sphere_sphere_kinematics' geometry (a root and two divisions in series).
+  for (int b = 0; b < n_batches; ++b) {
+    Batch& B = chunk[b];
+    const std::size_t e = at + std::size_t(b) * kLanes;
+    B.lanes = count - b * kLanes < kLanes ? count - b * kLanes : kLanes;
+    for (int l = 0; l < kLanes; ++l) {
+      B.slot[l] = a.slots + ring.slot[e + l] * L.size;
+      B.ii[l] = std::uint32_t(ring.ij[e + l]);
+      B.jj[l] = std::uint32_t(ring.ij[e + l] >> 32);
+    }
+    const P3 d{Pack(_mm256_load_pd(ring.dx + e)), Pack(_mm256_load_pd(ring.dy + e)), Pack(_mm256_load_pd(ring.dz + e))};
+    const Pack r2 = Pack(_mm256_load_pd(ring.r2 + e));
+    const Pack Ri = Pack(_mm256_load_pd(ring.ri + e)), Rj = Pack(_mm256_load_pd(ring.rj + e));
+    const Pack rs = Ri + Rj;
+    const Pack r = sqrt4(r2);
+    const Pack inv_m = gather1(a.inv_mass, B.ii) + gather1(a.inv_mass, B.jj);
+    const Pack w_eff = one / (inv_m * rs);
+    B.n = d * (one / r);
+    B.delta = rs - r;
+    B.m_eff = w_eff * rs;
+    B.r_eff = Ri * Rj * inv_m * w_eff;
+    // The lever arms R - delta/2, which are also the torque arms of the loads
+    // (LoadScatter::add_pair).
+    B.arm_i = Ri - 0.5 * B.delta;
+    B.arm_j = Rj - 0.5 * B.delta;
+    B.mu = mu;
+  }
+  // Stage 1b: sphere_sphere_kinematics, the velocities.
+  for (int b = 0; b < n_batches; ++b) {
+    Batch& B = chunk[b];
+    const Pack li = B.arm_i, lj = B.arm_j;
+    const P3 wi = gather3(a.omega, B.ii), wj = gather3(a.omega, B.jj);
+    const P3 v_rel = (gather3(a.v, B.jj) - gather3(a.v, B.ii)) - cross(li * wi + lj * wj, B.n);
+    B.v_n = dot(v_rel, B.n);
+    B.v_t = v_rel - B.v_n * B.n;
+    B.spin = 0.5 * dot(wi + wj, B.n);
+  }
+
+  law_stages(st, chunk, n_batches);
+}
+
+/// Stages 2 and 3 (ContactLaw::evaluate of LinearSpringDashpot and the slot's outputs) on
+/// batches whose kinematics stage 1 filled; the loads into rows for particle pairs.
+void law_stages(KernelState& st, Batch* chunk, int n_batches)
+{
+  const PairBatchArgs& a = st.a;
+  const PairSlotLayout& L = a.layout;
+  const LinearLawConstants& law = a.law;
+  const Pack dt = st.dt, zero = st.zero, one = st.one;
+  // Stage 2: LinearNormal::evaluate, LinearTangential's stiffness and damping, and
+  // rotate_into_tangent_plane(xi, n, spin * dt) plus the increment v_t dt.
+  for (int b = 0; b < n_batches; ++b) {
+    Batch& B = chunk[b];
+    Pack k_n;
+    if (law.stiffness_direct) {
+      k_n = splat(law.k_n);
+    } else {
+      for (int l = 0; l < kLanes; ++l) {
+        if (!(B.m_eff[l] == st.memo_m && B.r_eff[l] == st.memo_r)) {
+          st.memo_m = B.m_eff[l];
+          st.memo_r = B.r_eff[l];
+          st.memo_k = law.stiffness(law.normal_part, st.memo_m, st.memo_r);
+        }
+        k_n[l] = st.memo_k;
+      }
+    }
+    Pack c_n;
+    switch (law.damping) {
+      case LinearLawConstants::Damping::direct: c_n = splat(law.c_n); break;
+      case LinearLawConstants::Damping::per_unit_mass: c_n = law.gamma_n * B.m_eff; break;
+      case LinearLawConstants::Damping::restitution: default: c_n = 2.0 * law.zeta * sqrt4(B.m_eff * k_n); break;
+    }
+    B.elastic = k_n * B.delta;
+    const Pack f_lin = B.elastic - c_n * B.v_n;                  // S0 eq. (1)
+    B.f_n = law.clamp_tensile ? max4(f_lin, zero) : f_lin;
+
+    // LinearTangential::evaluate
+    B.k_t = law.k_t_is_ratio ? law.k_t * k_n : splat(law.k_t);
+    B.c_t = law.c_t_is_ratio ? law.c_t * c_n : splat(law.c_t);
+    // one / k_t, the same bits when k_t is one value for all lanes (then computed once).
+    B.inv_k_t = law.k_t_is_ratio && !law.stiffness_direct ? one / B.k_t
+                : law.k_t_is_ratio                        ? splat(1.0 / (law.k_t * law.k_n))
+                                                          : splat(1.0 / law.k_t);
+    P3 xi;
+    if (L.contiguous_outputs) {  // the slot's spring: (x, y, z, the next double of the slot) per lane, transposed
+      __m256d a0 = _mm256_loadu_pd(&slot_double(B.slot[0], L.shear)), a1 = _mm256_loadu_pd(&slot_double(B.slot[1], L.shear));
+      __m256d a2 = _mm256_loadu_pd(&slot_double(B.slot[2], L.shear)), a3 = _mm256_loadu_pd(&slot_double(B.slot[3], L.shear));
+      transpose4(a0, a1, a2, a3);
+      xi = {Pack(a0), Pack(a1), Pack(a2)};
+    } else {
+      for (int l = 0; l < kLanes; ++l) {
+        xi.x[l] = slot_double(B.slot[l], L.shear);
+        xi.y[l] = slot_double(B.slot[l], L.shear + 8);
+        xi.z[l] = slot_double(B.slot[l], L.shear + 16);
+      }
+    }
+    {  // rotate_into_tangent_plane(xi, n, spin * dt)
+      const P3& n = B.n;
+      const Pack s2 = dot(xi, xi);
+      P3 p = xi + (B.spin * dt) * cross(n, xi);
+      p = p - dot(n, p) * n;
+      const Pack p2 = dot(p, p);
+      const Pack e = s2 / p2 - 1.0;
+      const Pack series = 1.0 + e * (0.5 - e * (0.125 - e * 0.0625));
+      const Mask small = abs4(e) < 1e-4;
+      // The root only when a lane needs it (the frame turns little per step: rarely).
+      const Pack f = all(small) ? series : select(small, series, sqrt4(1.0 + e));
+      const P3 turned = select(p2 > 1e-24 * s2, p * f, P3{zero, zero, zero});
+      xi = select(s2 == 0.0, xi, turned);
+    }
+    B.xi = xi + B.v_t * dt;
+  }
+
+  // Stage 3: the Coulomb cap, the slot's outputs and the loads.
+  for (int b = 0; b < n_batches; ++b) {
+    Batch& B = chunk[b];
+    const P3& xi = B.xi;
+    const P3& v_t = B.v_t;
+    const P3 f_trial = (-B.k_t) * xi - B.c_t * v_t;             // S0 eq. (2), developing friction
+    const Pack f_max = B.mu * max4(B.f_n, zero);                // S0 eq. (2), cap mu_s |F_n|
+    const Pack f2 = dot(f_trial, f_trial);
+    const Mask slide = f2 > f_max * f_max;                      // developed friction
+    P3 f_t = f_trial, xi_new = xi, xi_slide = xi;
+    if (any(slide)) {  // the root and the division only for a batch with a sliding contact
+      const P3 f_slide = f_trial * (f_max / sqrt4(f2));
+      xi_slide = P3{-(f_slide.x + B.c_t * v_t.x), -(f_slide.y + B.c_t * v_t.y), -(f_slide.z + B.c_t * v_t.z)} *
+                 B.inv_k_t;
+      f_t = select(slide, f_slide, f_trial);
+      xi_new = select(slide, xi_slide, xi);
+    }
+
+    // ContactLaw::evaluate and the slot update of pass A.
+    const P3 out_force = B.f_n * B.n + f_t;
+    const P3 out_lever = cross(B.n, f_t);
+    const P3& out_shear = xi_new;
+    const Pack out_overlap = B.delta;
+    if (L.contiguous_outputs) {
+      // overlap, shear, force, lever are ten consecutive doubles of a slot: two 4x4
+      // transposes and one 4x2 give each lane's row, stored with 256- and 128-bit stores.
+      __m256d q0 = __m256d(out_overlap), q1 = __m256d(out_shear.x), q2 = __m256d(out_shear.y), q3 = __m256d(out_shear.z);
+      __m256d h0 = __m256d(out_force.x), h1 = __m256d(out_force.y), h2 = __m256d(out_force.z), h3 = __m256d(out_lever.x);
+      transpose4(q0, q1, q2, q3);
+      transpose4(h0, h1, h2, h3);
+      const __m256d ly = __m256d(out_lever.y), lz = __m256d(out_lever.z);
+      const __m256d lo = _mm256_unpacklo_pd(ly, lz), hi = _mm256_unpackhi_pd(ly, lz);  // (y0 z0 y2 z2), (y1 z1 y3 z3)
+      const __m256d rows[kLanes] = {q0, q1, q2, q3}, rows2[kLanes] = {h0, h1, h2, h3};
+      const __m128d tail[kLanes] = {_mm256_castpd256_pd128(lo), _mm256_castpd256_pd128(hi), _mm256_extractf128_pd(lo, 1),
+                                    _mm256_extractf128_pd(hi, 1)};
+      for (int l = 0; l < B.lanes; ++l) {
+        double* row = &slot_double(B.slot[l], L.overlap);
+        _mm256_storeu_pd(row, rows[l]);
+        _mm256_storeu_pd(row + 4, rows2[l]);
+        _mm_storeu_pd(row + 8, tail[l]);
+      }
+    } else {
+      for (int l = 0; l < B.lanes; ++l) {
+        unsigned char* s = B.slot[l];
+        slot_double(s, L.overlap) = out_overlap[l];
+        slot_double(s, L.shear) = out_shear.x[l];
+        slot_double(s, L.shear + 8) = out_shear.y[l];
+        slot_double(s, L.shear + 16) = out_shear.z[l];
+        slot_double(s, L.force) = out_force.x[l];
+        slot_double(s, L.force + 8) = out_force.y[l];
+        slot_double(s, L.force + 16) = out_force.z[l];
+        slot_double(s, L.lever) = out_lever.x[l];
+        slot_double(s, L.lever + 8) = out_lever.y[l];
+        slot_double(s, L.lever + 16) = out_lever.z[l];
+      }
+    }
+
+    if (a.rows) {
+      // LoadScatter::add_pair: F_i -= F, F_j += F, T_k -= arm_k (n x F_t), lane by lane in
+      // slot order.
+      const P3 ti = B.arm_i * out_lever, tj = B.arm_j * out_lever;
+      const __m256d z = _mm256_setzero_pd();
+      __m256d f0 = __m256d(out_force.x), f1 = __m256d(out_force.y), f2v = __m256d(out_force.z), f3 = z;
+      __m256d i0 = __m256d(ti.x), i1 = __m256d(ti.y), i2 = __m256d(ti.z), i3 = z;
+      __m256d j0 = __m256d(tj.x), j1 = __m256d(tj.y), j2 = __m256d(tj.z), j3 = z;
+      transpose4(f0, f1, f2v, f3);
+      transpose4(i0, i1, i2, i3);
+      transpose4(j0, j1, j2, j3);
+      const __m256d F[kLanes] = {f0, f1, f2v, f3}, TI[kLanes] = {i0, i1, i2, i3}, TJ[kLanes] = {j0, j1, j2, j3};
+      for (int l = 0; l < B.lanes; ++l) {
+        const std::uint32_t ri = a.row_of[B.ii[l]], rj = a.row_of[B.jj[l]];
+        double* const bi = a.rows + 8 * std::size_t(ri == a.shared ? a.junk_row + l : ri);
+        double* const bj = a.rows + 8 * std::size_t(rj == a.shared ? a.junk_row + kLanes + l : rj);
+        _mm256_store_pd(bi, _mm256_sub_pd(_mm256_load_pd(bi), F[l]));
+        _mm256_store_pd(bi + 4, _mm256_sub_pd(_mm256_load_pd(bi + 4), TI[l]));
+        _mm256_store_pd(bj, _mm256_add_pd(_mm256_load_pd(bj), F[l]));
+        _mm256_store_pd(bj + 4, _mm256_sub_pd(_mm256_load_pd(bj + 4), TJ[l]));
+      }
+    }
+
+    if (a.track_losses) {
+      // -(F_n - F_n^el) v_n dt + c_t |v_t|^2 dt, and f_max |xi_trial - xi| when sliding;
+      // summed slot by slot in slot order, as the scalar path does.
+      const Pack damping = (-(B.f_n - B.elastic)) * B.v_n * dt + B.c_t * dot(v_t, v_t) * dt;
+      const P3 slip = xi - xi_slide;
+      const Pack friction = f_max * sqrt4(dot(slip, slip));
+      for (int l = 0; l < B.lanes; ++l) {
+        st.losses.damping += damping[l];
+        if (slide[l]) st.losses.friction += friction[l];
+      }
+    }
+  }
+}
+
+/// Gives an apart slot zeros, written only when it did not already hold them (as the
+/// scalar path).
+void clear_slot(const PairBatchArgs& a, std::size_t c)
+{
+  const PairSlotLayout& L = a.layout;
+  unsigned char* s = a.slots + c * L.size;
+  const double* xi = &slot_double(s, L.shear);
+  if (slot_double(s, L.overlap) == 0.0 && xi[0] == 0.0 && xi[1] == 0.0 && xi[2] == 0.0) return;
+  slot_double(s, L.overlap) = 0.0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    slot_double(s, L.shear + 8 * k) = 0.0;
+    slot_double(s, L.force + 8 * k) = 0.0;
+    slot_double(s, L.lever + 8 * k) = 0.0;
+  }
+}
+
+/// The wall contact test of DemSystem pass A on wall slots [c0, c0 + lanes): PlaneWall::gap
+/// of an unbounded wall, h = (x - p_w) . n_w, apart when h >= R. The ring's entries hold h
+/// (as r2) and R (as ri); i is the wall, j the particle.
+void test_wall_batch(const PairBatchArgs& a, std::size_t c0, int lanes, TouchingRing& ring)
+{
+  const PairSlotLayout& L = a.layout;
+  std::uint32_t ww[kLanes], pp[kLanes];
+  for (int l = 0; l < kLanes; ++l) {
+    const unsigned char* s = a.slots + (c0 + std::size_t(l < lanes ? l : 0)) * L.size;
+    std::memcpy(&ww[l], s + L.i, sizeof(std::uint32_t));
+    std::memcpy(&pp[l], s + L.j, sizeof(std::uint32_t));
+  }
+  const P3 d = gather3(a.x, pp) - gather3(a.wall_point, ww);
+  const Pack h = dot(d, gather3(a.wall_normal, ww));
+  const Pack R = gather1(a.radius, pp);
+  const Mask touching = ~(h >= R);
+  const int valid = (1 << lanes) - 1;
+  const int mask = _mm256_movemask_pd(__m256d(touching)) & valid;
+  if (mask != 0) {
+    const __m256i ij = _mm256_set_epi64x(std::int64_t(std::uint64_t(ww[3]) | std::uint64_t(pp[3]) << 32),
+                                         std::int64_t(std::uint64_t(ww[2]) | std::uint64_t(pp[2]) << 32),
+                                         std::int64_t(std::uint64_t(ww[1]) | std::uint64_t(pp[1]) << 32),
+                                         std::int64_t(std::uint64_t(ww[0]) | std::uint64_t(pp[0]) << 32));
+    const __m256i slots = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(c0)), _mm256_set_epi64x(3, 2, 1, 0));
+    ring.append(mask, d, h, R, R, ij, slots);
+  }
+  for (int apart = valid & ~mask; apart != 0; apart &= apart - 1) clear_slot(a, c0 + std::size_t(__builtin_ctz(unsigned(apart))));
+}
+
+/// Stage 1 of wall slots (sphere_wall_kinematics), then stages 2 and 3, on `count` <=
+/// kGroup touching wall slots of the ring from entry `at`.
+void run_wall_group(KernelState& st, TouchingRing& ring, std::size_t at, int count)
+{
+  const PairBatchArgs& a = st.a;
+  const PairSlotLayout& L = a.layout;
+  const Pack one = st.one;
+  Batch chunk[kChunk];
+  ring.pad(at, count);
+  const int n_batches = (count + kLanes - 1) / kLanes;
+  for (int b = 0; b < n_batches; ++b) {
+    Batch& B = chunk[b];
+    const std::size_t e = at + std::size_t(b) * kLanes;
+    B.lanes = count - b * kLanes < kLanes ? count - b * kLanes : kLanes;
+    for (int l = 0; l < kLanes; ++l) {
+      B.slot[l] = a.slots + ring.slot[e + l] * L.size;
+      B.ii[l] = std::uint32_t(ring.ij[e + l]);        // the wall
+      B.jj[l] = std::uint32_t(ring.ij[e + l] >> 32);  // the particle
+    }
+    const Pack h = Pack(_mm256_load_pd(ring.r2 + e)), R = Pack(_mm256_load_pd(ring.ri + e));
+    // sphere_wall_kinematics
+    B.n = gather3(a.wall_normal, B.ii);
+    B.delta = R - h;
+    const Pack l = R - 0.5 * B.delta;
+    const P3 w = gather3(a.omega, B.jj);
+    const P3 v_rel = (gather3(a.v, B.jj) - gather3(a.wall_velocity, B.ii)) - l * cross(w, B.n);
+    B.v_n = dot(v_rel, B.n);
+    B.v_t = v_rel - B.v_n * B.n;
+    B.m_eff = one / gather1(a.inv_mass, B.jj);
+    B.r_eff = R;
+    B.spin = 0.5 * dot(w, B.n);
+    B.arm_i = l;
+    B.arm_j = l;
+    B.mu = gather1(a.wall_mu, B.ii);
+  }
+  law_stages(st, chunk, n_batches);
+}
+
+/// The test on groups of slots and the stages on each full group of touching slots.
+template <class Test, class Group>
+PairBatchLosses run_slots(const PairBatchArgs& a, std::size_t begin, std::size_t end, Test test, Group group)
+{
+  KernelState st{a, splat(a.dt), splat(a.mu), splat(0.0), splat(1.0), -1.0, -1.0, 0.0, {}};
+  TouchingRing ring;
+  for (std::size_t c0 = begin; c0 < end; c0 += kGroup) {
+    // The contact test of a group of slots; the stages then run on each full group of
+    // touching slots (apart slots, a quarter of a dense packing's list, skip them).
+    const std::size_t group_end = end - c0 < std::size_t(kGroup) ? end : c0 + kGroup;
+    for (std::size_t c = c0; c < group_end; c += kLanes)
+      test(a, c, group_end - c < std::size_t(kLanes) ? int(group_end - c) : kLanes, ring);
+    while (ring.head - ring.tail >= std::size_t(kGroup)) {
+      group(st, ring, ring.tail % TouchingRing::kRing, kGroup);
+      ring.tail += kGroup;
+    }
+  }
+  if (ring.head > ring.tail) group(st, ring, ring.tail % TouchingRing::kRing, int(ring.head - ring.tail));
+  return st.losses;
+}
 
 }  // namespace
 
 PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_t begin, std::size_t end)
 {
-  PairBatchLosses losses;
-  const PairSlotLayout& L = a.layout;
-  const LinearLawConstants& law = a.law;
-  const Pack dt = splat(a.dt), mu = splat(a.mu), zero = splat(0.0), one = splat(1.0);
-  // Memo of S0's k_n(m*, R*) (a pure function): one call per change of (m*, R*).
-  double memo_m = -1.0, memo_r = -1.0, memo_k = 0.0;
-  Batch chunk[kChunk];
+  return run_slots(a, begin, end, test_batch, run_group);
+}
 
-  for (std::size_t chunk0 = begin; chunk0 < end; chunk0 += kChunk * kLanes) {
-    const std::size_t chunk_slots = end - chunk0 < std::size_t(kChunk * kLanes) ? end - chunk0 : kChunk * kLanes;
-    const int n_batches = int((chunk_slots + kLanes - 1) / kLanes);
-
-    // Stage 1a: DemSystem pass A's test and sphere_sphere_kinematics' geometry.
-    for (int b = 0; b < n_batches; ++b) {
-      Batch& B = chunk[b];
-      const std::size_t c0 = chunk0 + std::size_t(b) * kLanes;
-      B.lanes = int(end - c0 < std::size_t(kLanes) ? end - c0 : std::size_t(kLanes));
-      for (int l = 0; l < kLanes; ++l) {
-        B.slot[l] = a.slots + (c0 + std::size_t(l < B.lanes ? l : 0)) * L.size;  // spare lanes repeat lane 0
-        std::memcpy(&B.ii[l], B.slot[l] + L.i, sizeof(std::uint32_t));
-        std::memcpy(&B.jj[l], B.slot[l] + L.j, sizeof(std::uint32_t));
-      }
-      // DemSystem pass A: d = x_j - x_i, r2, R_i + R_j; apart when r2 >= range^2 or r2 == 0.
-      const P3 d = gather3(a.x, B.jj) - gather3(a.x, B.ii);
-      const Pack r2 = dot(d, d);
-      const Pack Ri = gather1(a.radius, B.ii), Rj = gather1(a.radius, B.jj);
-      const Pack rs = Ri + Rj;
-      B.touching = (r2 < rs * rs) & (r2 != 0.0);
-
-      // sphere_sphere_kinematics: the geometry (a root and two divisions in series)
-      const Pack r = sqrt4(r2);
-      const Pack inv_m = gather1(a.inv_mass, B.ii) + gather1(a.inv_mass, B.jj);
-      const Pack w_eff = one / (inv_m * rs);
-      B.n = d * (one / r);
-      B.delta = rs - r;
-      B.m_eff = w_eff * rs;
-      B.r_eff = Ri * Rj * inv_m * w_eff;
-      // The lever arms R - delta/2, which are also the torque arms of the loads
-      // (LoadScatter::add_pair); R for an apart slot (it holds overlap 0; stage 1b's
-      // velocities of an apart lane are never stored).
-      B.arm_i = select(B.touching, Ri - 0.5 * B.delta, Ri);
-      B.arm_j = select(B.touching, Rj - 0.5 * B.delta, Rj);
-    }
-    // Stage 1b: sphere_sphere_kinematics, the velocities.
-    for (int b = 0; b < n_batches; ++b) {
-      Batch& B = chunk[b];
-      const Pack li = B.arm_i, lj = B.arm_j;
-      const P3 wi = gather3(a.omega, B.ii), wj = gather3(a.omega, B.jj);
-      const P3 v_rel = (gather3(a.v, B.jj) - gather3(a.v, B.ii)) - cross(li * wi + lj * wj, B.n);
-      B.v_n = dot(v_rel, B.n);
-      B.v_t = v_rel - B.v_n * B.n;
-      B.spin = 0.5 * dot(wi + wj, B.n);
-    }
-
-    // Stage 2: LinearNormal::evaluate, LinearTangential's stiffness and damping, and
-    // rotate_into_tangent_plane(xi, n, spin * dt) plus the increment v_t dt.
-    for (int b = 0; b < n_batches; ++b) {
-      Batch& B = chunk[b];
-      Pack k_n;
-      if (law.stiffness_direct) {
-        k_n = splat(law.k_n);
-      } else {
-        for (int l = 0; l < kLanes; ++l) {
-          if (!(B.m_eff[l] == memo_m && B.r_eff[l] == memo_r)) {
-            memo_m = B.m_eff[l];
-            memo_r = B.r_eff[l];
-            memo_k = law.stiffness(law.normal_part, memo_m, memo_r);
-          }
-          k_n[l] = memo_k;
-        }
-      }
-      Pack c_n;
-      switch (law.damping) {
-        case LinearLawConstants::Damping::direct: c_n = splat(law.c_n); break;
-        case LinearLawConstants::Damping::per_unit_mass: c_n = law.gamma_n * B.m_eff; break;
-        case LinearLawConstants::Damping::restitution: default: c_n = 2.0 * law.zeta * sqrt4(B.m_eff * k_n); break;
-      }
-      B.elastic = k_n * B.delta;
-      const Pack f_lin = B.elastic - c_n * B.v_n;                  // S0 eq. (1)
-      B.f_n = law.clamp_tensile ? max4(f_lin, zero) : f_lin;
-
-      // LinearTangential::evaluate
-      B.k_t = law.k_t_is_ratio ? law.k_t * k_n : splat(law.k_t);
-      B.c_t = law.c_t_is_ratio ? law.c_t * c_n : splat(law.c_t);
-      // one / k_t, the same bits when k_t is one value for all lanes (then computed once).
-      B.inv_k_t = law.k_t_is_ratio && !law.stiffness_direct ? one / B.k_t
-                  : law.k_t_is_ratio                        ? splat(1.0 / (law.k_t * law.k_n))
-                                                            : splat(1.0 / law.k_t);
-      P3 xi;
-      if (L.contiguous_outputs) {  // the slot's spring: (x, y, z, the next double of the slot) per lane, transposed
-        __m256d a0 = _mm256_loadu_pd(&slot_double(B.slot[0], L.shear)), a1 = _mm256_loadu_pd(&slot_double(B.slot[1], L.shear));
-        __m256d a2 = _mm256_loadu_pd(&slot_double(B.slot[2], L.shear)), a3 = _mm256_loadu_pd(&slot_double(B.slot[3], L.shear));
-        transpose4(a0, a1, a2, a3);
-        xi = {Pack(a0), Pack(a1), Pack(a2)};
-      } else {
-        for (int l = 0; l < kLanes; ++l) {
-          xi.x[l] = slot_double(B.slot[l], L.shear);
-          xi.y[l] = slot_double(B.slot[l], L.shear + 8);
-          xi.z[l] = slot_double(B.slot[l], L.shear + 16);
-        }
-      }
-      {  // rotate_into_tangent_plane(xi, n, spin * dt)
-        const P3& n = B.n;
-        const Pack s2 = dot(xi, xi);
-        P3 p = xi + (B.spin * dt) * cross(n, xi);
-        p = p - dot(n, p) * n;
-        const Pack p2 = dot(p, p);
-        const Pack e = s2 / p2 - 1.0;
-        const Pack series = 1.0 + e * (0.5 - e * (0.125 - e * 0.0625));
-        const Mask small = abs4(e) < 1e-4;
-        // The root only when a lane needs it (the frame turns little per step: rarely).
-        const Pack f = all(small) ? series : select(small, series, sqrt4(1.0 + e));
-        const P3 turned = select(p2 > 1e-24 * s2, p * f, P3{zero, zero, zero});
-        xi = select(s2 == 0.0, xi, turned);
-      }
-      B.xi = xi + B.v_t * dt;
-    }
-
-    // Stage 3: the Coulomb cap, the slot's outputs and the loads.
-    for (int b = 0; b < n_batches; ++b) {
-      Batch& B = chunk[b];
-      const P3& xi = B.xi;
-      const P3& v_t = B.v_t;
-      const P3 f_trial = (-B.k_t) * xi - B.c_t * v_t;             // S0 eq. (2), developing friction
-      const Pack f_max = mu * max4(B.f_n, zero);                  // S0 eq. (2), cap mu_s |F_n|
-      const Pack f2 = dot(f_trial, f_trial);
-      const Mask slide = (f2 > f_max * f_max) & B.touching;      // developed friction
-      P3 f_t = f_trial, xi_new = xi, xi_slide = xi;
-      if (any(slide)) {  // the root and the division only for a batch with a sliding contact
-        const P3 f_slide = f_trial * (f_max / sqrt4(f2));
-        xi_slide = P3{-(f_slide.x + B.c_t * v_t.x), -(f_slide.y + B.c_t * v_t.y), -(f_slide.z + B.c_t * v_t.z)} *
-                   B.inv_k_t;
-        f_t = select(slide, f_slide, f_trial);
-        xi_new = select(slide, xi_slide, xi);
-      }
-
-      // ContactLaw::evaluate and the slot update of pass A; apart slots hold zeros.
-      const P3 force = B.f_n * B.n + f_t;
-      const P3 lever = cross(B.n, f_t);
-      const P3 zero3{zero, zero, zero};
-      const P3 out_force = select(B.touching, force, zero3), out_lever = select(B.touching, lever, zero3);
-      const P3 out_shear = select(B.touching, xi_new, zero3);
-      const Pack out_overlap = select(B.touching, B.delta, zero);
-      if (L.contiguous_outputs) {
-        // overlap, shear, force, lever are ten consecutive doubles of a slot: two 4x4
-        // transposes and one 4x2 give each lane's row, stored with 256- and 128-bit stores.
-        __m256d q0 = __m256d(out_overlap), q1 = __m256d(out_shear.x), q2 = __m256d(out_shear.y), q3 = __m256d(out_shear.z);
-        __m256d h0 = __m256d(out_force.x), h1 = __m256d(out_force.y), h2 = __m256d(out_force.z), h3 = __m256d(out_lever.x);
-        transpose4(q0, q1, q2, q3);
-        transpose4(h0, h1, h2, h3);
-        const __m256d ly = __m256d(out_lever.y), lz = __m256d(out_lever.z);
-        const __m256d lo = _mm256_unpacklo_pd(ly, lz), hi = _mm256_unpackhi_pd(ly, lz);  // (y0 z0 y2 z2), (y1 z1 y3 z3)
-        const __m256d rows[kLanes] = {q0, q1, q2, q3}, rows2[kLanes] = {h0, h1, h2, h3};
-        const __m128d tail[kLanes] = {_mm256_castpd256_pd128(lo), _mm256_castpd256_pd128(hi), _mm256_extractf128_pd(lo, 1),
-                                      _mm256_extractf128_pd(hi, 1)};
-        for (int l = 0; l < B.lanes; ++l) {
-          double* row = &slot_double(B.slot[l], L.overlap);
-          _mm256_storeu_pd(row, rows[l]);
-          _mm256_storeu_pd(row + 4, rows2[l]);
-          _mm_storeu_pd(row + 8, tail[l]);
-        }
-      } else {
-        for (int l = 0; l < B.lanes; ++l) {
-          unsigned char* s = B.slot[l];
-          slot_double(s, L.overlap) = out_overlap[l];
-          slot_double(s, L.shear) = out_shear.x[l];
-          slot_double(s, L.shear + 8) = out_shear.y[l];
-          slot_double(s, L.shear + 16) = out_shear.z[l];
-          slot_double(s, L.force) = out_force.x[l];
-          slot_double(s, L.force + 8) = out_force.y[l];
-          slot_double(s, L.force + 16) = out_force.z[l];
-          slot_double(s, L.lever) = out_lever.x[l];
-          slot_double(s, L.lever + 8) = out_lever.y[l];
-          slot_double(s, L.lever + 16) = out_lever.z[l];
-        }
-      }
-
-      if (a.rows) {
-        // LoadScatter::add_pair: F_i -= F, F_j += F, T_k -= arm_k (n x F_t), lane by lane in
-        // slot order.
-        const P3 ti = B.arm_i * out_lever, tj = B.arm_j * out_lever;
-        const __m256d z = _mm256_setzero_pd();
-        __m256d f0 = __m256d(out_force.x), f1 = __m256d(out_force.y), f2v = __m256d(out_force.z), f3 = z;
-        __m256d i0 = __m256d(ti.x), i1 = __m256d(ti.y), i2 = __m256d(ti.z), i3 = z;
-        __m256d j0 = __m256d(tj.x), j1 = __m256d(tj.y), j2 = __m256d(tj.z), j3 = z;
-        transpose4(f0, f1, f2v, f3);
-        transpose4(i0, i1, i2, i3);
-        transpose4(j0, j1, j2, j3);
-        const __m256d F[kLanes] = {f0, f1, f2v, f3}, TI[kLanes] = {i0, i1, i2, i3}, TJ[kLanes] = {j0, j1, j2, j3};
-        for (int l = 0; l < B.lanes; ++l) {
-          const std::uint32_t ri = a.row_of[B.ii[l]], rj = a.row_of[B.jj[l]];
-          double* const bi = a.rows + 8 * std::size_t(ri == a.shared ? a.junk_row + l : ri);
-          double* const bj = a.rows + 8 * std::size_t(rj == a.shared ? a.junk_row + kLanes + l : rj);
-          _mm256_store_pd(bi, _mm256_sub_pd(_mm256_load_pd(bi), F[l]));
-          _mm256_store_pd(bi + 4, _mm256_sub_pd(_mm256_load_pd(bi + 4), TI[l]));
-          _mm256_store_pd(bj, _mm256_add_pd(_mm256_load_pd(bj), F[l]));
-          _mm256_store_pd(bj + 4, _mm256_sub_pd(_mm256_load_pd(bj + 4), TJ[l]));
-        }
-      }
-
-      if (a.track_losses) {
-        // -(F_n - F_n^el) v_n dt + c_t |v_t|^2 dt, and f_max |xi_trial - xi| when sliding;
-        // summed slot by slot in slot order, as the scalar path does.
-        const Pack damping = (-(B.f_n - B.elastic)) * B.v_n * dt + B.c_t * dot(v_t, v_t) * dt;
-        const P3 slip = xi - xi_slide;
-        const Pack friction = f_max * sqrt4(dot(slip, slip));
-        for (int l = 0; l < B.lanes; ++l) {
-          if (!B.touching[l]) continue;
-          losses.damping += damping[l];
-          if (slide[l]) losses.friction += friction[l];
-        }
-      }
-    }
-  }
-  return losses;
+PairBatchLosses evaluate_linear_walls_batched(const PairBatchArgs& a, std::size_t begin, std::size_t end)
+{
+  return run_slots(a, begin, end, test_wall_batch, run_wall_group);
 }
 
 #else  // no AVX2 kernel in this build: DemSystem keeps the scalar path
@@ -339,6 +588,11 @@ PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_
 bool pair_batch_kernel_available() { return false; }
 
 PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs&, std::size_t, std::size_t)
+{
+  return PairBatchLosses{};
+}
+
+PairBatchLosses evaluate_linear_walls_batched(const PairBatchArgs&, std::size_t, std::size_t)
 {
   return PairBatchLosses{};
 }

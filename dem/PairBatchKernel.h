@@ -6,10 +6,14 @@
 // data-dependent branches per contact: apart/touching, the frame-rotation series, stick/slip).
 // This kernel evaluates four pair slots at once in 256-bit vectors (AVX2), with every
 // branch turned into a lane select, so the unpredictable branches disappear and the
-// divisions and roots of four contacts share one instruction. The batches run in three
-// stages (kinematics; normal law and spring rotation; Coulomb cap, outputs and loads),
-// each stage over eight batches before the next, so that the processor overlaps the long
-// dependency chains of independent batches.
+// divisions and roots of four contacts share one instruction. The contact test runs first
+// on every slot, four at a time; the touching slots (three in four of a dense packing's
+// list, the rest lie within the Verlet skin) are packed into a ring with what the test
+// computed, and the stages run only on them, in groups of eight full batches: kinematics;
+// normal law and spring rotation; Coulomb cap, outputs and loads; each stage over the
+// eight batches before the next, so that the processor overlaps the long dependency chains
+// of independent batches. The touching slots keep their ascending order, so every body's
+// loads are still added in slot order.
 //
 // It is the same law as the scalar path, operation for operation:
 // sphere_sphere_kinematics (ContactKinematics.h), LinearNormal::evaluate,
@@ -29,6 +33,10 @@
 //
 // Loads: with `rows`, each slot's force and torques are then added into its two bodies'
 // rows in slot order, exactly as LoadScatter::add_pair does (the same bits as the gather).
+//
+// Wall slots: the particle-wall contacts of unbounded plane walls run through the same
+// stages 2 and 3 after their own test (h < R, h the distance of the centre from the plane)
+// and kinematics (sphere_wall_kinematics), the wall's velocity and mu_p per lane.
 //
 // Availability: `pair_batch_kernel_available()` is true when the kernel was compiled
 // (x86-64 with a compiler that takes -mavx2) and the processor has AVX2; otherwise
@@ -90,6 +98,13 @@ struct PairBatchArgs
   double* rows = nullptr;
   const std::uint32_t* row_of = nullptr;
   std::uint32_t shared = 0, junk_row = 0;
+  /// Wall slots (evaluate_linear_walls_batched): the slots are WallSlots, whose layout is a
+  /// PairSlot's with i the wall and j the particle; the unbounded plane walls as arrays
+  /// (point, normal and velocity: 3 per wall; the Coulomb coefficient mu_p: 1 per wall).
+  const double* wall_point = nullptr;
+  const double* wall_normal = nullptr;
+  const double* wall_velocity = nullptr;
+  const double* wall_mu = nullptr;
 };
 
 /// Energy dissipated by the slots of one call (summed lane by lane, then over the lanes).
@@ -104,5 +119,11 @@ bool pair_batch_kernel_available();
 /// Evaluates slots [begin, end) of `args.slots`; returns their losses when
 /// `args.track_losses`. Precondition: pair_batch_kernel_available().
 PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& args, std::size_t begin, std::size_t end);
+
+/// The same law on wall slots [begin, end) against unbounded plane walls
+/// (sphere_wall_kinematics, then ContactLaw::evaluate; the same bits as the scalar path).
+/// The slots' loads are not added anywhere (pass B sums them per body). Precondition:
+/// pair_batch_kernel_available() and the wall arrays of `args` set.
+PairBatchLosses evaluate_linear_walls_batched(const PairBatchArgs& args, std::size_t begin, std::size_t end);
 
 }  // namespace geocomp::dem

@@ -22,10 +22,14 @@ using Vec3 = Eigen::Vector3d;
 /// Per-contact kernels of the step loop: inlined into the loop so the compiler can
 /// overlap the long division/square-root chains of consecutive contacts (measured: GCC
 /// otherwise keeps them as calls and the loop runs one contact at a time).
+/// The same for the per-particle lambdas of DemSystem's block sweeps (a lambda's call
+/// operator; measured: GCC kept it as a call per particle, its vectors spilled to the stack).
 #if defined(__GNUC__)
 #define GEOCOMP_CONTACT_KERNEL inline __attribute__((always_inline))
+#define GEOCOMP_SWEEP_BODY __attribute__((always_inline))
 #else
 #define GEOCOMP_CONTACT_KERNEL inline
+#define GEOCOMP_SWEEP_BODY
 #endif
 using Quat = Eigen::Quaterniond;
 

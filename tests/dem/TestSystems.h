@@ -45,14 +45,17 @@ inline void add_renumbered_backwards(DemSystem& sys, const DemSystem& ref, doubl
   for (std::size_t w = 0; w < ref.n_walls(); ++w) sys.add_wall(ref.wall(w));
 }
 
-/// Positions, velocities, spins and forces by particle id, then (with `contacts`) every
-/// contact's overlap and tangential history: a run's state as raw doubles.
+/// Positions, velocities, spins, forces and orientations by particle id, then (with
+/// `contacts`) every contact's overlap and tangential history: a run's state as raw doubles.
 inline std::vector<double> state_bits(const DemSystem& sys, bool contacts = false)
 {
   std::vector<double> s;
-  for (ParticleId id = 0; id < sys.n_particles(); ++id)
+  for (ParticleId id = 0; id < sys.n_particles(); ++id) {
     for (const Vec3& v : {sys.position(id), sys.velocity(id), sys.angular_velocity(id), sys.force(id)})
       s.insert(s.end(), v.data(), v.data() + 3);
+    const Quat q = sys.orientation(id);
+    s.insert(s.end(), q.coeffs().data(), q.coeffs().data() + 4);
+  }
   if (contacts)
     for (const ContactState& c : sys.export_contact_state()) {
       s.push_back(c.overlap);
