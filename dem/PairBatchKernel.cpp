@@ -575,12 +575,18 @@ PairBatchLosses run_slots(const PairBatchArgs& a, std::size_t begin, std::size_t
 
 PairBatchLosses evaluate_linear_pairs_batched(const PairBatchArgs& a, std::size_t begin, std::size_t end)
 {
-  return run_slots(a, begin, end, test_batch, run_group);
+  // (lambdas, so that the test and the stages are inlined into the loop)
+  return run_slots(
+      a, begin, end, [](const PairBatchArgs& x, std::size_t c0, int lanes, TouchingRing& r) { test_batch(x, c0, lanes, r); },
+      [](KernelState& st, TouchingRing& r, std::size_t at, int count) { run_group(st, r, at, count); });
 }
 
 PairBatchLosses evaluate_linear_walls_batched(const PairBatchArgs& a, std::size_t begin, std::size_t end)
 {
-  return run_slots(a, begin, end, test_wall_batch, run_wall_group);
+  return run_slots(
+      a, begin, end,
+      [](const PairBatchArgs& x, std::size_t c0, int lanes, TouchingRing& r) { test_wall_batch(x, c0, lanes, r); },
+      [](KernelState& st, TouchingRing& r, std::size_t at, int count) { run_wall_group(st, r, at, count); });
 }
 
 #else  // no AVX2 kernel in this build: DemSystem keeps the scalar path
