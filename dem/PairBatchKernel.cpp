@@ -11,6 +11,8 @@
 
 #if defined(GEOCOMP_PAIR_BATCH_AVX2)
 #include <immintrin.h>
+
+#include "dem/Avx2Transpose.h"
 #endif
 
 namespace geocomp::dem {
@@ -67,16 +69,7 @@ inline Pack gather1(const double* a, const std::uint32_t idx[kLanes])
   return Pack{a[idx[0]], a[idx[1]], a[idx[2]], a[idx[3]]};
 }
 
-/// 4x4 transpose: rows (one per lane) <-> packs (one per quantity).
-inline void transpose4(__m256d& a, __m256d& b, __m256d& c, __m256d& d)
-{
-  const __m256d t0 = _mm256_unpacklo_pd(a, b), t1 = _mm256_unpackhi_pd(a, b);
-  const __m256d t2 = _mm256_unpacklo_pd(c, d), t3 = _mm256_unpackhi_pd(c, d);
-  a = _mm256_permute2f128_pd(t0, t2, 0x20);
-  b = _mm256_permute2f128_pd(t1, t3, 0x20);
-  c = _mm256_permute2f128_pd(t0, t2, 0x31);
-  d = _mm256_permute2f128_pd(t1, t3, 0x31);
-}
+using avx2::transpose4;  // Avx2Transpose.h
 
 inline double& slot_double(unsigned char* slot, std::size_t offset)
 {
@@ -206,35 +199,60 @@ struct TouchingRing
 
 void clear_slot(const PairBatchArgs& a, std::size_t c);
 
+/// A batch of slots under the contact test: the slots' bodies and what the test computed.
+struct TestedBatch
+{
+  std::size_t c0 = 0;  ///< the first slot
+  int lanes = 0;       ///< slots c0 .. c0 + lanes - 1 (spare lanes repeat lane 0)
+  std::uint32_t i[kLanes], j[kLanes];
+  P3 d;
+  Pack r2, ri, rj;
+  Mask touching;
+};
+
+/// The bodies i and j of slots [c0, c0 + lanes).
+void read_indices(const PairBatchArgs& a, std::size_t c0, int lanes, TestedBatch& t)
+{
+  const PairSlotLayout& L = a.layout;
+  t.c0 = c0;
+  t.lanes = lanes;
+  for (int l = 0; l < kLanes; ++l) {
+    const unsigned char* s = a.slots + (c0 + std::size_t(l < lanes ? l : 0)) * L.size;  // spare lanes repeat lane 0
+    std::memcpy(&t.i[l], s + L.i, sizeof(std::uint32_t));
+    std::memcpy(&t.j[l], s + L.j, sizeof(std::uint32_t));
+  }
+}
+
+/// Appends the touching slots of a tested batch to the ring and clears the apart ones.
+void keep_touching(const PairBatchArgs& a, const TestedBatch& t, TouchingRing& ring)
+{
+  const int valid = (1 << t.lanes) - 1;
+  const int mask = _mm256_movemask_pd(__m256d(t.touching)) & valid;
+  if (mask != 0) {
+    std::int64_t ij[kLanes];
+    for (int l = 0; l < kLanes; ++l) ij[l] = std::int64_t(std::uint64_t(t.i[l]) | std::uint64_t(t.j[l]) << 32);
+    const __m256i slots = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(t.c0)), _mm256_set_epi64x(3, 2, 1, 0));
+    ring.append(mask, t.d, t.r2, t.ri, t.rj, _mm256_set_epi64x(ij[3], ij[2], ij[1], ij[0]), slots);
+  }
+  for (int apart = valid & ~mask; apart != 0; apart &= apart - 1)
+    clear_slot(a, t.c0 + std::size_t(__builtin_ctz(unsigned(apart))));
+}
+
 /// The contact test of DemSystem pass A on slots [c0, c0 + lanes): appends the touching
 /// ones to the ring and gives the others (apart) zeros, written only when the slot did not
 /// already hold them (as the scalar path).
 void test_batch(const PairBatchArgs& a, std::size_t c0, int lanes, TouchingRing& ring)
 {
-  const PairSlotLayout& L = a.layout;
-  std::uint32_t ii[kLanes], jj[kLanes];
-  for (int l = 0; l < kLanes; ++l) {
-    const unsigned char* s = a.slots + (c0 + std::size_t(l < lanes ? l : 0)) * L.size;  // spare lanes repeat lane 0
-    std::memcpy(&ii[l], s + L.i, sizeof(std::uint32_t));
-    std::memcpy(&jj[l], s + L.j, sizeof(std::uint32_t));
-  }
+  TestedBatch t;
+  read_indices(a, c0, lanes, t);
   // d = x_j - x_i, r2, R_i + R_j; apart when r2 >= range^2 or r2 == 0.
-  const P3 d = gather3(a.x, jj) - gather3(a.x, ii);
-  const Pack r2 = dot(d, d);
-  const Pack Ri = gather1(a.radius, ii), Rj = gather1(a.radius, jj);
-  const Pack rs = Ri + Rj;
-  const Mask touching = (r2 < rs * rs) & (r2 != 0.0);
-  const int valid = (1 << lanes) - 1;
-  const int mask = _mm256_movemask_pd(__m256d(touching)) & valid;
-  if (mask != 0) {
-    const __m256i ij = _mm256_set_epi64x(std::int64_t(std::uint64_t(ii[3]) | std::uint64_t(jj[3]) << 32),
-                                         std::int64_t(std::uint64_t(ii[2]) | std::uint64_t(jj[2]) << 32),
-                                         std::int64_t(std::uint64_t(ii[1]) | std::uint64_t(jj[1]) << 32),
-                                         std::int64_t(std::uint64_t(ii[0]) | std::uint64_t(jj[0]) << 32));
-    const __m256i slots = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(c0)), _mm256_set_epi64x(3, 2, 1, 0));
-    ring.append(mask, d, r2, Ri, Rj, ij, slots);
-  }
-  for (int apart = valid & ~mask; apart != 0; apart &= apart - 1) clear_slot(a, c0 + std::size_t(__builtin_ctz(unsigned(apart))));
+  t.d = gather3(a.x, t.j) - gather3(a.x, t.i);
+  t.r2 = dot(t.d, t.d);
+  t.ri = gather1(a.radius, t.i);
+  t.rj = gather1(a.radius, t.j);
+  const Pack rs = t.ri + t.rj;
+  t.touching = (t.r2 < rs * rs) & (t.r2 != 0.0);
+  keep_touching(a, t, ring);
 }
 
 /// The law's constants, the memo of k_n and the losses shared by the groups of one call.
@@ -249,12 +267,25 @@ struct KernelState
 
 void law_stages(KernelState& st, Batch* chunk, int n_batches);
 
+/// Batch b of the `count` ring entries from `at`: its slots and bodies and its lane count;
+/// returns the ring index of its first entry.
+std::size_t take_batch(const PairBatchArgs& a, const TouchingRing& ring, std::size_t at, int count, int b, Batch& B)
+{
+  const std::size_t e = at + std::size_t(b) * kLanes;
+  B.lanes = count - b * kLanes < kLanes ? count - b * kLanes : kLanes;
+  for (int l = 0; l < kLanes; ++l) {
+    B.slot[l] = a.slots + ring.slot[e + l] * a.layout.size;
+    B.ii[l] = std::uint32_t(ring.ij[e + l]);
+    B.jj[l] = std::uint32_t(ring.ij[e + l] >> 32);
+  }
+  return e;
+}
+
 /// Stages 1a (after the test) to 3 on `count` <= kGroup touching slots of the ring from
 /// entry `at` (a multiple of kGroup).
 void run_group(KernelState& st, TouchingRing& ring, std::size_t at, int count)
 {
   const PairBatchArgs& a = st.a;
-  const PairSlotLayout& L = a.layout;
   const Pack mu = st.mu, one = st.one;
   Batch chunk[kChunk];
   ring.pad(at, count);
@@ -263,13 +294,7 @@ void run_group(KernelState& st, TouchingRing& ring, std::size_t at, int count)
   // Stage 1a: sphere_sphere_kinematics' geometry (a root and two divisions in series).
   for (int b = 0; b < n_batches; ++b) {
     Batch& B = chunk[b];
-    const std::size_t e = at + std::size_t(b) * kLanes;
-    B.lanes = count - b * kLanes < kLanes ? count - b * kLanes : kLanes;
-    for (int l = 0; l < kLanes; ++l) {
-      B.slot[l] = a.slots + ring.slot[e + l] * L.size;
-      B.ii[l] = std::uint32_t(ring.ij[e + l]);
-      B.jj[l] = std::uint32_t(ring.ij[e + l] >> 32);
-    }
+    const std::size_t e = take_batch(a, ring, at, count, b, B);
     const P3 d{Pack(_mm256_load_pd(ring.dx + e)), Pack(_mm256_load_pd(ring.dy + e)), Pack(_mm256_load_pd(ring.dz + e))};
     const Pack r2 = Pack(_mm256_load_pd(ring.r2 + e));
     const Pack Ri = Pack(_mm256_load_pd(ring.ri + e)), Rj = Pack(_mm256_load_pd(ring.rj + e));
@@ -488,28 +513,13 @@ void clear_slot(const PairBatchArgs& a, std::size_t c)
 /// (as r2) and R (as ri); i is the wall, j the particle.
 void test_wall_batch(const PairBatchArgs& a, std::size_t c0, int lanes, TouchingRing& ring)
 {
-  const PairSlotLayout& L = a.layout;
-  std::uint32_t ww[kLanes], pp[kLanes];
-  for (int l = 0; l < kLanes; ++l) {
-    const unsigned char* s = a.slots + (c0 + std::size_t(l < lanes ? l : 0)) * L.size;
-    std::memcpy(&ww[l], s + L.i, sizeof(std::uint32_t));
-    std::memcpy(&pp[l], s + L.j, sizeof(std::uint32_t));
-  }
-  const P3 d = gather3(a.x, pp) - gather3(a.wall_point, ww);
-  const Pack h = dot(d, gather3(a.wall_normal, ww));
-  const Pack R = gather1(a.radius, pp);
-  const Mask touching = ~(h >= R);
-  const int valid = (1 << lanes) - 1;
-  const int mask = _mm256_movemask_pd(__m256d(touching)) & valid;
-  if (mask != 0) {
-    const __m256i ij = _mm256_set_epi64x(std::int64_t(std::uint64_t(ww[3]) | std::uint64_t(pp[3]) << 32),
-                                         std::int64_t(std::uint64_t(ww[2]) | std::uint64_t(pp[2]) << 32),
-                                         std::int64_t(std::uint64_t(ww[1]) | std::uint64_t(pp[1]) << 32),
-                                         std::int64_t(std::uint64_t(ww[0]) | std::uint64_t(pp[0]) << 32));
-    const __m256i slots = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(c0)), _mm256_set_epi64x(3, 2, 1, 0));
-    ring.append(mask, d, h, R, R, ij, slots);
-  }
-  for (int apart = valid & ~mask; apart != 0; apart &= apart - 1) clear_slot(a, c0 + std::size_t(__builtin_ctz(unsigned(apart))));
+  TestedBatch t;
+  read_indices(a, c0, lanes, t);
+  t.d = gather3(a.x, t.j) - gather3(a.wall_point, t.i);
+  t.r2 = dot(t.d, gather3(a.wall_normal, t.i));  // h
+  t.ri = t.rj = gather1(a.radius, t.j);           // R
+  t.touching = ~(t.r2 >= t.ri);
+  keep_touching(a, t, ring);
 }
 
 /// Stage 1 of wall slots (sphere_wall_kinematics), then stages 2 and 3, on `count` <=
@@ -517,20 +527,13 @@ void test_wall_batch(const PairBatchArgs& a, std::size_t c0, int lanes, Touching
 void run_wall_group(KernelState& st, TouchingRing& ring, std::size_t at, int count)
 {
   const PairBatchArgs& a = st.a;
-  const PairSlotLayout& L = a.layout;
   const Pack one = st.one;
   Batch chunk[kChunk];
   ring.pad(at, count);
   const int n_batches = (count + kLanes - 1) / kLanes;
   for (int b = 0; b < n_batches; ++b) {
     Batch& B = chunk[b];
-    const std::size_t e = at + std::size_t(b) * kLanes;
-    B.lanes = count - b * kLanes < kLanes ? count - b * kLanes : kLanes;
-    for (int l = 0; l < kLanes; ++l) {
-      B.slot[l] = a.slots + ring.slot[e + l] * L.size;
-      B.ii[l] = std::uint32_t(ring.ij[e + l]);        // the wall
-      B.jj[l] = std::uint32_t(ring.ij[e + l] >> 32);  // the particle
-    }
+    const std::size_t e = take_batch(a, ring, at, count, b, B);  // ii: the wall, jj: the particle
     const Pack h = Pack(_mm256_load_pd(ring.r2 + e)), R = Pack(_mm256_load_pd(ring.ri + e));
     // sphere_wall_kinematics
     B.n = gather3(a.wall_normal, B.ii);

@@ -5,6 +5,8 @@
 
 #if defined(GEOCOMP_PAIR_BATCH_AVX2)
 #include <immintrin.h>
+
+#include "dem/Avx2Transpose.h"
 #endif
 
 namespace geocomp::dem {
@@ -32,15 +34,7 @@ inline void components(Pack a, Pack b, Pack c, Pack& x, Pack& y, Pack& z)
   z = _mm256_permute4x64_pd(_mm256_blend_pd(_mm256_blend_pd(a, b, 0b0010), c, 0b1001), 0b11000110);  // a2 b1 c0 c3
 }
 
-inline void transpose4(Pack& a, Pack& b, Pack& c, Pack& d)
-{
-  const Pack t0 = _mm256_unpacklo_pd(a, b), t1 = _mm256_unpackhi_pd(a, b);
-  const Pack t2 = _mm256_unpacklo_pd(c, d), t3 = _mm256_unpackhi_pd(c, d);
-  a = _mm256_permute2f128_pd(t0, t2, 0x20);
-  b = _mm256_permute2f128_pd(t1, t3, 0x20);
-  c = _mm256_permute2f128_pd(t0, t2, 0x31);
-  d = _mm256_permute2f128_pd(t1, t3, 0x31);
-}
+using avx2::transpose4;  // Avx2Transpose.h
 
 inline Pack add(Pack a, Pack b) { return _mm256_add_pd(a, b); }
 inline Pack sub(Pack a, Pack b) { return _mm256_sub_pd(a, b); }
