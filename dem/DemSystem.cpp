@@ -743,15 +743,14 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
     // Pass A: particle-wall contacts, through the same law.
     // The slot's terms of the wall's record (summed below in slot order): the torque of
     // -F about the wall's point from the contact point on the plane, the servo's stiffness.
-    const auto record_wall_term = [&](std::size_t c) {
+    // n_w: the contact normal PlaneWall::gap gave for the slot.
+    const auto record_wall_term = [&](std::size_t c, const Vec3& n_w) {
       const WallSlot& s = wslots[c];
       WallTerm& term = wall_terms_[c];
       term.recorded = term.touching = false;
       if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) return;  // apart
       const PlaneWall& wall = walls_[s.wall];
       const Index p = s.particle;
-      Vec3 n_w;
-      wall.gap(x[p], n_w);
       term.recorded = true;
       const Vec3 xc = x[p] - (R[p] - s.overlap) * n_w;
       term.torque = (xc - wall.point).cross(-s.force);
@@ -770,7 +769,8 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
         if (wall_batch.wall_point) {  // four slots at a time (PairBatchKernel.h, same bits)
           const PairBatchLosses l = evaluate_linear_walls_batched(wall_batch, std::size_t(b) * kBlock, end);
-          for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) record_wall_term(c);
+          for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c)
+            record_wall_term(c, walls_[wslots[c].wall].normal);  // unbounded planes: gap's normal
           if constexpr (Track) BlockLosses{l.damping, l.friction, 0.0}.store(&block_losses_[3 * (nbp + b)]);
           continue;
         }
@@ -789,6 +789,7 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
           s.force.setZero();
           s.lever.setZero();
           if constexpr (Law::has_memory) separate(wmem[c]);
+          record_wall_term(c, n_w);
           continue;
         }
         ContactKinematics k;
@@ -806,8 +807,8 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
         }
         store_contact(s, k, f);
         if constexpr (Track) lost.add(f);
+        record_wall_term(c, n_w);
       }
-      for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) record_wall_term(c);
       if constexpr (Track) lost.store(&block_losses_[3 * (nbp + b)]);
     }
     // Pass B1: the gather of each shared body's incident slots in ascending order, from
