@@ -377,11 +377,18 @@ void DemSystem::refresh_index()
   for (Index k = 0; k < store_.size(); ++k) index_of_[store_.id[k]] = k;
 }
 
+void DemSystem::set_prefetch(Prefetch p)
+{
+  prefetch_mode_ = p;
+  prefetch_ = p == Prefetch::on || (p == Prefetch::automatic && memory_bytes() > kPrefetchFootprint);
+}
+
 void DemSystem::rebuild()
 {
   lists_.with_memory = law_has_memory();
   search_.set_reach(law_reach());
   if (search_.rebuild(store_, walls_, lists_, threads_)) refresh_index();
+  set_prefetch(prefetch_mode_);
   rebuild_requested_ = false;
   radius_growth_ = 0.0;
   moved2_ = 0.0;
@@ -624,7 +631,10 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
   [[maybe_unused]] PairBatchArgs wall_batch;
   if constexpr (std::is_same_v<Law, LinearSpringDashpot>) {
     batched = batched_pairs() && !pairs.empty() && n > 0;
-    if (batched) batch = pair_batch_args(law, store_, lists_, mu, dt_h, Track);
+    if (batched) {
+      batch = pair_batch_args(law, store_, lists_, mu, dt_h, Track);
+      batch.prefetch = prefetch_;
+    }
     // Wall slots too when every wall is an unbounded plane.
     const bool planes = std::none_of(walls_.begin(), walls_.end(), [](const PlaneWall& w) { return w.bounded(); });
     if (batched_pairs() && planes && !wslots.empty()) {

@@ -91,6 +91,9 @@ struct PairBatchArgs
   double mu = 0.0;                ///< Coulomb coefficient between particles
   double dt = 0.0;                ///< history increment (0: evaluate without advancing)
   bool track_losses = false;
+  /// Software prefetch of the slots and the j bodies a group or two ahead of the test
+  /// (DemSystem::set_prefetch: for lists larger than the last-level cache).
+  bool prefetch = false;
   /// Where the slots' loads are added (LoadScatter.h): rows of 8 doubles (force, 0,
   /// torque, 0; 64-byte aligned), the row of each body (`shared`: one of this worker's
   /// eight junk rows from `junk_row` on, one per lane and side). No rows: the slots are

@@ -82,15 +82,17 @@ void make_specimen(DemSystem& sys, LawVariant v, bool batched, int threads)
   sys.set_batched_pairs(batched);
 }
 
-void expect_same_run(LawVariant v, int threads)
+void expect_same_run(LawVariant v, int threads, DemSystem::Prefetch prefetch = DemSystem::Prefetch::automatic)
 {
   DemSystem batched, scalar;
   make_specimen(batched, v, true, threads);
   make_specimen(scalar, v, false, threads);
+  batched.set_prefetch(prefetch);
   if (!batched.batched_pairs()) GTEST_SKIP() << "no AVX2 kernel in this build or on this processor";
   ASSERT_FALSE(scalar.batched_pairs());
   batched.run(1500);
   scalar.run(1500);
+  ASSERT_EQ(batched.prefetching(), prefetch == DemSystem::Prefetch::on);  // 343 spheres: automatic is off
   ASSERT_GT(batched.n_touching_pairs(), 300u);  // a loaded specimen, not a gas
   const EnergyLedger eb = batched.energy(), es = scalar.energy();
   ASSERT_GT(es.dissipated_friction, 0.0);       // contacts slid
@@ -113,6 +115,13 @@ TEST(PairBatchKernel, EqualsTheScalarLawBitForBitWithTheBenchmarkConstants)
 TEST(PairBatchKernel, EqualsTheScalarLawBitForBitWithS0StiffnessAndRestitution)
 {
   expect_same_run(LawVariant::s0_restitution_damped_tangent, 1);
+}
+
+// The software prefetch (DemSystem::set_prefetch) reads slots ahead of the test up to the
+// end of each worker's range (two workers here) and changes nothing.
+TEST(PairBatchKernel, SoftwarePrefetchKeepsTheBitsOnTwoWorkers)
+{
+  expect_same_run(LawVariant::direct_per_unit_mass, 2, DemSystem::Prefetch::on);
 }
 
 // The sweep's two rotation branches: spins small enough for the series and spins whose
