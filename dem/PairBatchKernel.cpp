@@ -212,7 +212,7 @@ struct TestedBatch
 };
 
 /// The bodies i and j of slots [c0, c0 + lanes).
-void read_indices(const PairBatchArgs& a, std::size_t c0, int lanes, TestedBatch& t)
+[[gnu::always_inline]] inline void read_indices(const PairBatchArgs& a, std::size_t c0, int lanes, TestedBatch& t)
 {
   const PairSlotLayout& L = a.layout;
   t.c0 = c0;
@@ -225,7 +225,7 @@ void read_indices(const PairBatchArgs& a, std::size_t c0, int lanes, TestedBatch
 }
 
 /// Appends the touching slots of a tested batch to the ring and clears the apart ones.
-void keep_touching(const PairBatchArgs& a, const TestedBatch& t, TouchingRing& ring)
+[[gnu::always_inline]] inline void keep_touching(const PairBatchArgs& a, const TestedBatch& t, TouchingRing& ring)
 {
   const int valid = (1 << t.lanes) - 1;
   const int mask = _mm256_movemask_pd(__m256d(t.touching)) & valid;
