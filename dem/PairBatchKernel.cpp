@@ -554,8 +554,8 @@ void run_wall_group(KernelState& st, TouchingRing& ring, std::size_t at, int cou
   law_stages(st, chunk, n_batches);
 }
 
-/// A prefetch of the line at p into all cache levels. (GCC dropped _mm_prefetch and
-/// __builtin_prefetch from these loops, which it saw as without effect: volatile asm stays.)
+/// A prefetch of the line at p into all cache levels. (_mm_prefetch and __builtin_prefetch
+/// left no prefetch instruction in this unit's object code with GCC 12; volatile asm does.)
 inline void prefetch_line(const void* p)
 {
   asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(p)));
