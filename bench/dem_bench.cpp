@@ -17,11 +17,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 using namespace geocomp::dem;
 
@@ -60,8 +57,8 @@ int main(int argc, char** argv)
   if (const char* e = std::getenv("GEOCOMP_SCALAR_PAIRS"); e && std::string(e) == "1") sys.set_batched_pairs(false);
   // GEOCOMP_PREFETCH=on|off: force the pair kernel's software prefetch (default: automatic,
   // on above DemSystem::kPrefetchFootprint).
-  if (const char* e = std::getenv("GEOCOMP_PREFETCH"); e && std::string(e) == "on") sys.set_prefetch(DemSystem::Prefetch::on);
-  if (const char* e = std::getenv("GEOCOMP_PREFETCH"); e && std::string(e) == "off") sys.set_prefetch(DemSystem::Prefetch::off);
+  if (const char* e = std::getenv("GEOCOMP_PREFETCH"); e && (std::string(e) == "on" || std::string(e) == "off"))
+    sys.set_prefetch(std::string(e) == "on" ? DemSystem::Prefetch::on : DemSystem::Prefetch::off);
 
   sys.run(std::size_t(n_eq));
   const std::size_t rebuilds0 = sys.n_rebuilds();

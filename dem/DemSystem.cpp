@@ -468,7 +468,7 @@ double DemSystem::kick(double dt)
 double DemSystem::kick_drift(double dt)
 {
   const std::vector<Vec3>& x_ref = search_.reference_positions();
-  if (batched_pairs() && store_.size() > 0 && local_damping_ == 0.0 && kick_drift_kernel_available()) {
+  if (batched_sweeps() && store_.size() > 0) {
     // Four spheres at a time (ParticleSweepKernel.h, the same bits as the loop below).
     KickDriftArgs args;
     args.x = store_.x.front().data();
@@ -661,9 +661,9 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
   scatter_.plan(lists_, n, kBlock, workers, search_.n_builds());
   LoadRow* const rows = scatter_.rows();
   const Vec3 g = gravity_;
-  // The batched closing kick (no local damping; the switch of the batched kernels).
+  // The batched closing kick.
   ClosingKickArgs closing;
-  if (kick_dt > 0.0 && n > 0 && local_damping_ == 0.0 && batched_pairs() && kick_drift_kernel_available()) {
+  if (kick_dt > 0.0 && n > 0 && batched_sweeps()) {
     closing.rows = reinterpret_cast<const double*>(rows);
     closing.force = store_.force.front().data();
     closing.torque = store_.torque.front().data();

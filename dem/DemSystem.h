@@ -45,6 +45,7 @@
 #include "dem/Fragment.h"
 #include "dem/NeighbourSearch.h"
 #include "dem/PairBatchKernel.h"
+#include "dem/ParticleSweepKernel.h"
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
 
@@ -211,6 +212,9 @@ public:
   /// bits; off forces the scalar paths (used by the test that compares them).
   void set_batched_pairs(bool on) { batched_pairs_ = on; }
   bool batched_pairs() const { return batched_pairs_ && pair_batch_kernel_available(); }
+  /// The kick and drift sweeps four spheres at a time: batched, and no local damping
+  /// (the vector sweeps have none).
+  bool batched_sweeps() const { return batched_pairs() && local_damping_ == 0.0 && kick_drift_kernel_available(); }
   /// Software prefetch in the batched pair kernel (the slots two groups of 32 ahead, the
   /// j bodies' position, velocities and load row one group ahead). It saves a tenth to a
   /// fifth of the step when the particles and lists outgrow the last-level cache (100 000
