@@ -59,6 +59,11 @@ int main(int argc, char** argv)
   // on above DemSystem::kPrefetchFootprint).
   if (const char* e = std::getenv("GEOCOMP_PREFETCH"); e && (std::string(e) == "on" || std::string(e) == "off"))
     sys.set_prefetch(std::string(e) == "on" ? DemSystem::Prefetch::on : DemSystem::Prefetch::off);
+  // The timed run reads no contact forces (the peer run writes no dump either): keep only
+  // what the steps need (DemSystem::ContactForceRecording); GEOCOMP_RECORD_FORCES=1 keeps
+  // every contact's force at every step, as a driver sampling each step would.
+  if (const char* e = std::getenv("GEOCOMP_RECORD_FORCES"); !(e && std::string(e) == "1"))
+    sys.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
 
   sys.run(std::size_t(n_eq));
   const std::size_t rebuilds0 = sys.n_rebuilds();

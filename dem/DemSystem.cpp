@@ -32,10 +32,10 @@ static_assert(kBlock % 4 == 0, "batches of four slots start at block starts");
 static_assert(sizeof(WallSlot) == sizeof(PairSlot) && offsetof(WallSlot, wall) == offsetof(PairSlot, i) &&
                   offsetof(WallSlot, particle) == offsetof(PairSlot, j) &&
                   offsetof(WallSlot, overlap) == offsetof(PairSlot, overlap) &&
-                  offsetof(WallSlot, shear) == offsetof(PairSlot, shear) &&
-                  offsetof(WallSlot, force) == offsetof(PairSlot, force) &&
-                  offsetof(WallSlot, lever) == offsetof(PairSlot, lever),
+                  offsetof(WallSlot, shear) == offsetof(PairSlot, shear),
               "the batched kernel reads wall slots with the pair slots' layout");
+static_assert(sizeof(SlotLoad) == 6 * sizeof(double) && offsetof(SlotLoad, lever) == 3 * sizeof(double),
+              "the batched kernel writes a SlotLoad as six doubles: force, lever");
 
 /// S0's k_n(m*, R*) of a LinearNormal, for the batched kernel.
 double linear_normal_stiffness(const void* part, double m_eff, double r_eff)
@@ -58,10 +58,9 @@ PairBatchArgs pair_batch_args(const LinearSpringDashpot& law, const ParticleStor
   const auto at = [&](const void* member) {
     return std::size_t(static_cast<const unsigned char*>(member) - reinterpret_cast<const unsigned char*>(&probe));
   };
-  a.layout = PairSlotLayout{sizeof(PairSlot), at(&probe.i),     at(&probe.j),
-                            at(&probe.overlap), at(probe.shear.data()), at(probe.force.data()), at(probe.lever.data())};
-  a.layout.contiguous_outputs = a.layout.shear == a.layout.overlap + 8 && a.layout.force == a.layout.shear + 24 &&
-                                a.layout.lever == a.layout.force + 24;
+  a.layout = PairSlotLayout{sizeof(PairSlot), at(&probe.i), at(&probe.j), at(&probe.overlap), at(probe.shear.data())};
+  a.layout.contiguous_history = a.layout.shear == a.layout.overlap + 8;
+  a.loads = reinterpret_cast<double*>(lists.pair_loads.data());
   const LinearNormal::Parameters& np = law.normal().parameters();
   LinearLawConstants& c = a.law;
   c.stiffness_direct = np.stiffness_input == LinearNormal::Stiffness::direct;
@@ -86,13 +85,13 @@ PairBatchArgs pair_batch_args(const LinearSpringDashpot& law, const ParticleStor
   return a;
 }
 
-/// Pass A's result of one contact in its slot (pair or wall slot: the same fields).
+/// Pass A's result of one contact: the overlap into its slot (pair or wall slot: the same
+/// fields), and its load.
 template <class Slot>
-inline void store_contact(Slot& s, const ContactKinematics& k, const ContactForce& f)
+inline SlotLoad store_contact(Slot& s, const ContactKinematics& k, const ContactForce& f)
 {
-  s.force = f.normal * k.normal + f.tangential;
-  s.lever = k.normal.cross(f.tangential);
   s.overlap = k.overlap;
+  return SlotLoad{f.normal * k.normal + f.tangential, k.normal.cross(f.tangential)};
 }
 
 /// The energy a block of slots dissipated, summed in slot order; `store` writes the
@@ -414,7 +413,7 @@ void DemSystem::prepare()
       (radius_growth_ > 0.0 && search_.needs_rebuild(with_growth(moved2_, radius_growth_), walls_)))
     rebuild();
   if (!ready_) {
-    compute_forces(0.0);  // forces at the current state, histories not advanced
+    compute_forces(0.0, 0.0, true);  // forces at the current state, histories not advanced (kept)
     ready_ = true;
   }
 }
@@ -566,10 +565,13 @@ void DemSystem::step()
   moved2_ = max_d2;
   for (PlaneWall& w : walls_) w.point += dt_ * w.velocity;
   if (rebuild_requested_ || search_.needs_rebuild(with_growth(max_d2, radius_growth_), walls_)) rebuild();
+  // Every contact's load is kept for contacts() at every step, or at the requested ones.
+  const bool record = recording_ == ContactForceRecording::every_step || record_requested_;
+  record_requested_ = false;
   if (overdamped_ == 0.0 && clumps_.empty()) {
-    losses_.dissipated_local += compute_forces(dt_, dt_);  // with the closing half kick
+    losses_.dissipated_local += compute_forces(dt_, dt_, record);  // with the closing half kick
   } else {
-    compute_forces(dt_);
+    compute_forces(dt_, 0.0, record);
     if (overdamped_ == 0.0) losses_.dissipated_local += kick(dt_);
     if (!clumps_.empty()) kick_clumps(dt_);
   }
@@ -592,20 +594,22 @@ void DemSystem::run(std::size_t n)
 
 // @sect4{Contact forces: pass A per contact, pass B per particle}
 
-double DemSystem::compute_forces(double dt_history, double kick_dt)
+double DemSystem::compute_forces(double dt_history, double kick_dt, bool record)
 {
   const double kick_loss = std::visit(
     [&](const auto& law) {
-      if (track_energy_) return compute_forces_with<std::decay_t<decltype(law)>, true>(law, dt_history, kick_dt);
-      return compute_forces_with<std::decay_t<decltype(law)>, false>(law, dt_history, kick_dt);
+      using Law = std::decay_t<decltype(law)>;
+      if (track_energy_) return compute_forces_with<Law, true>(law, dt_history, kick_dt, record);
+      return compute_forces_with<Law, false>(law, dt_history, kick_dt, record);
     },
     model_);
+  loads_current_ = record;
   if (!clumps_.empty()) gather_clump_loads();
   return kick_loss;
 }
 
 template <class Law, bool Track>
-double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_dt)
+double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_dt, bool record)
 {
   const auto& x = store_.x;
   const auto& v = store_.v;
@@ -614,6 +618,8 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
   const auto& im = store_.inv_mass;
   auto& pairs = lists_.pairs;
   auto& wslots = lists_.walls;
+  auto& loads = lists_.pair_loads;
+  auto& wloads = lists_.wall_loads;
   const std::size_t n = store_.size();
   const std::size_t nbp = n_blocks(pairs.size());
   const std::size_t nbw = n_blocks(wslots.size());
@@ -634,12 +640,14 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
     if (batched) {
       batch = pair_batch_args(law, store_, lists_, mu, dt_h, Track);
       batch.prefetch = prefetch_;
+      batch.record_loads = record;
     }
     // Wall slots too when every wall is an unbounded plane.
     const bool planes = std::none_of(walls_.begin(), walls_.end(), [](const PlaneWall& w) { return w.bounded(); });
     if (batched_pairs() && planes && !wslots.empty()) {
       wall_batch = pair_batch_args(law, store_, lists_, 0.0, dt_h, Track);
       wall_batch.slots = reinterpret_cast<unsigned char*>(wslots.data());
+      wall_batch.loads = reinterpret_cast<double*>(wloads.data());
       wall_arrays_.resize(10 * walls_.size());
       double* const a = wall_arrays_.data();
       const std::size_t nw = walls_.size();
@@ -694,12 +702,14 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       wbatch.row_of = scatter_.targets();
       wbatch.shared = LoadScatter::kShared;
       wbatch.junk_row = scatter_.junk_row(wk);
-      // The scalar path's loads of slot c (the kernel adds its own).
-      const auto scatter_pair = [&](std::size_t c) {
+      // The scalar path's loads of slot c (the kernel adds its own), kept beside the slot
+      // when recording or when a body is shared (pass B1 gathers those).
+      const auto scatter_pair = [&](std::size_t c, const SlotLoad& load) {
         const PairSlot& s = pairs[c];
         const std::uint32_t ri = scatter_.row_of(s.i, wk), rj = scatter_.row_of(s.j, wk);
-        scatter_.add_pair(ri, rj, s, R[s.i], R[s.j]);
+        scatter_.add_pair(ri, rj, load, s.overlap, R[s.i], R[s.j]);
         if constexpr (Law::has_rolling) scatter_.add_rolling(ri, rj, pmem[c].rolling);
+        if (record || scatter_.shared(s.i) || scatter_.shared(s.j)) loads[c] = load;
       };
       for (std::int64_t b = std::int64_t(b_first); b < std::int64_t(b_last); ++b) {
         BlockLosses lost;
@@ -720,15 +730,14 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
           double range = rs;
           if constexpr (Law::has_cohesion) range += law.reach(R[i] * R[j] / rs);
           if (r2 >= range * range || r2 == 0.0) {
-            // Apart: the slot holds zeros (written only when it did not already).
+            // Apart: the slot and its load hold zeros (written only when it did not already).
             if (s.overlap != 0.0 || s.shear.squaredNorm() != 0.0) {
               s.overlap = 0.0;
               s.shear.setZero();
-              s.force.setZero();
-              s.lever.setZero();
+              loads[c] = SlotLoad{};
             }
             if constexpr (Law::has_memory) separate(pmem[c]);
-            scatter_pair(c);
+            scatter_pair(c, SlotLoad{});
             continue;
           }
           ContactKinematics k;
@@ -743,8 +752,7 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
           } else {
             f = law.evaluate(k, s.shear);
           }
-          store_contact(s, k, f);
-          scatter_pair(c);
+          scatter_pair(c, store_contact(s, k, f));
           if constexpr (Track) lost.add(f);
         }
         if constexpr (Track) lost.store(&block_losses_[3 * b]);
@@ -756,14 +764,15 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
     // n_w: the contact normal PlaneWall::gap gave for the slot.
     const auto record_wall_term = [&](std::size_t c, const Vec3& n_w) {
       const WallSlot& s = wslots[c];
+      const Vec3& force = wloads[c].force;
       WallTerm& term = wall_terms_[c];
       term.recorded = term.touching = false;
-      if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) return;  // apart
+      if (!(s.overlap > 0.0) && force.squaredNorm() == 0.0) return;  // apart
       const PlaneWall& wall = walls_[s.wall];
       const Index p = s.particle;
       term.recorded = true;
       const Vec3 xc = x[p] - (R[p] - s.overlap) * n_w;
-      term.torque = (xc - wall.point).cross(-s.force);
+      term.torque = (xc - wall.point).cross(-force);
       if (!(s.overlap > 0.0)) return;  // a bond across a gap: force, but no contact
       term.touching = true;
       ContactKinematics kw;
@@ -796,8 +805,7 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
         if (h >= range) {
           s.overlap = 0.0;
           s.shear.setZero();
-          s.force.setZero();
-          s.lever.setZero();
+          wloads[c] = SlotLoad{};
           if constexpr (Law::has_memory) separate(wmem[c]);
           record_wall_term(c, n_w);
           continue;
@@ -815,7 +823,7 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
         } else {
           f = law.evaluate(k, s.shear);
         }
-        store_contact(s, k, f);
+        wloads[c] = store_contact(s, k, f);
         if constexpr (Track) lost.add(f);
         record_wall_term(c, n_w);
       }
@@ -834,11 +842,12 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       Vec3 f = store_.mass[p] * g, t = Vec3::Zero();
       for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
         const PairSlot& s = pairs[inc[e] >> 1];
+        const SlotLoad& load = loads[inc[e] >> 1];
         // +F on j, -F on i, without a branch on the role; f + (-1 x F) and f - F are the
         // same IEEE operation (measured: no change in speed against the branch).
         const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
-        f += sign * s.force;
-        t -= (Rp - 0.5 * s.overlap) * s.lever;  // T = -(R - delta/2) n x F_t
+        f += sign * load.force;
+        t -= (Rp - 0.5 * s.overlap) * load.lever;  // T = -(R - delta/2) n x F_t
         if constexpr (Law::has_rolling) {       // M_r on j, -M_r on i
           if (inc[e] & 1u) t += pmem[inc[e] >> 1].rolling;
           else t -= pmem[inc[e] >> 1].rolling;
@@ -863,8 +872,8 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
         Vec3 t(rows[p].t[0], rows[p].t[1], rows[p].t[2]);
         for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
           const WallSlot& s = wslots[e];
-          f += s.force;
-          t -= (Rp - 0.5 * s.overlap) * s.lever;
+          f += wloads[e].force;
+          t -= (Rp - 0.5 * s.overlap) * wloads[e].lever;
           if constexpr (Law::has_rolling) t += wmem[e].rolling;
         }
         store_.force[p] = f;
@@ -897,7 +906,7 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
     if (!term.recorded) continue;
     const WallSlot& s = wslots[c];
     PlaneWall& wall = walls_[s.wall];
-    wall.force -= s.force;
+    wall.force -= wloads[c].force;
     wall.torque += term.torque;
     if constexpr (Law::has_rolling) wall.torque -= wmem[c].rolling;  // the wall receives -M_r
     if (!term.touching) continue;
@@ -911,11 +920,16 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
 
 std::vector<ContactRecord> DemSystem::contacts() const
 {
+  if (!contact_forces_current())
+    throw std::logic_error("DemSystem::contacts: the last step did not record the contact forces "
+                           "(ContactForceRecording::on_request: call record_contact_forces() before that step)");
   std::vector<ContactRecord> out;
   const auto& x = store_.x;
   const auto& R = store_.radius;
-  for (const PairSlot& s : lists_.pairs) {
-    if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;  // apart (a bond may pull across a gap)
+  for (std::size_t k = 0; k < lists_.pairs.size(); ++k) {
+    const PairSlot& s = lists_.pairs[k];
+    const Vec3& force = lists_.pair_loads[k].force;
+    if (!(s.overlap > 0.0) && force.squaredNorm() == 0.0) continue;  // apart (a bond may pull across a gap)
     // Reported with i the lower id (the slot's i is the earlier one in storage).
     const bool keep = store_.id[s.i] < store_.id[s.j];
     const Index a = keep ? s.i : s.j, b = keep ? s.j : s.i;
@@ -925,14 +939,16 @@ std::vector<ContactRecord> DemSystem::contacts() const
     c.branch = x[b] - x[a];
     c.normal = c.branch.normalized();
     c.overlap = s.overlap;
-    c.force = keep ? s.force : Vec3(-s.force);
+    c.force = keep ? force : Vec3(-force);
     c.normal_force = c.force.dot(c.normal);
     c.tangential_force = c.force - c.normal_force * c.normal;
     c.point = x[a] + (R[a] - 0.5 * s.overlap) * c.normal;
     out.push_back(c);
   }
-  for (const WallSlot& s : lists_.walls) {
-    if (!(s.overlap > 0.0) && s.force.squaredNorm() == 0.0) continue;
+  for (std::size_t k = 0; k < lists_.walls.size(); ++k) {
+    const WallSlot& s = lists_.walls[k];
+    const Vec3& force = lists_.wall_loads[k].force;
+    if (!(s.overlap > 0.0) && force.squaredNorm() == 0.0) continue;
     const PlaneWall& wall = walls_[s.wall];
     ContactRecord c;
     c.wall = true;
@@ -940,9 +956,9 @@ std::vector<ContactRecord> DemSystem::contacts() const
     c.j = store_.id[s.particle];
     wall.gap(x[s.particle], c.normal);
     c.overlap = s.overlap;
-    c.force = s.force;
-    c.normal_force = s.force.dot(c.normal);
-    c.tangential_force = s.force - c.normal_force * c.normal;
+    c.force = force;
+    c.normal_force = force.dot(c.normal);
+    c.tangential_force = force - c.normal_force * c.normal;
     c.point = x[s.particle] - (R[s.particle] - s.overlap) * c.normal;
     c.branch = x[s.particle] - c.point;
     out.push_back(c);
@@ -1078,14 +1094,15 @@ EnergyLedger DemSystem::energy() const
 // Everything the next step reads is written, in storage order, as raw bytes (see
 // BinaryState.h): then a system read back computes the same bits as the original. The
 // law is a variant of trivially copyable parameter structs and is stored as its bytes.
-// Version 3 added the contact memory (rolling springs, bonds) and the clumps; version 2
-// states (restart files, exact specimens in core stores) are still read, through their
-// old layouts (LegacyState.h), and continue as they would have.
+// Version 3 added the contact memory (rolling springs, bonds) and the clumps; version 4
+// moved the slots' loads beside them (ContactLists.h) and added the recording of contact
+// forces. Version 2 and 3 states (restart files, exact specimens in core stores) are still
+// read, through their old layouts (LegacyState.h), and continue as they would have.
 
 namespace {
-constexpr std::uint32_t kStateVersion = 3;
+constexpr std::uint32_t kStateVersion = 4;
 
-/// Reads the DEMSYSTM tag; returns its version (2 or 3).
+/// Reads the DEMSYSTM tag; returns its version (2 to 4).
 std::uint32_t read_state_version(std::istream& in)
 {
   char tag[8];
@@ -1093,9 +1110,28 @@ std::uint32_t read_state_version(std::istream& in)
   std::uint32_t version = 0;
   if (in) binary::get(in, version);
   if (!in || std::string(tag, 8) != "DEMSYSTM") throw binary::StateError("checkpoint: section 'DEMSYSTM' not found");
-  if (version != 2 && version != kStateVersion)
+  if (version < 2 || version > kStateVersion)
     throw binary::StateError("checkpoint: section 'DEMSYSTM' has another version");
   return version;
+}
+
+/// Reads a slot array and its loads: this version's two arrays, or the single array of
+/// versions 2 and 3, whose 88-byte slots held the loads (legacy::SlotV3).
+template <class Slot>
+void get_slots(std::istream& in, std::uint32_t version, std::vector<Slot>& slots, std::vector<SlotLoad>& loads)
+{
+  if (version >= 4) {
+    binary::get_vector(in, slots);
+    binary::get_vector(in, loads);
+    if (loads.size() != slots.size()) throw binary::StateError("checkpoint: contact loads do not match the contact lists");
+    return;
+  }
+  static_assert(sizeof(legacy::SlotV3) == 88, "the slots of versions 2 and 3 were 88 bytes");
+  std::vector<legacy::SlotV3> old;
+  binary::get_vector(in, old);
+  slots.resize(old.size());
+  loads.resize(old.size());
+  for (std::size_t k = 0; k < old.size(); ++k) legacy::convert(old[k], slots[k], loads[k]);
 }
 
 void write_clumps(std::ostream& out, const ClumpSet& c)
@@ -1167,9 +1203,11 @@ void DemSystem::write_state(std::ostream& out) const
   binary::put(out, mu_);
   search_.write_state(out);
   binary::put_vector(out, lists_.pairs);
+  binary::put_vector(out, lists_.pair_loads);
   binary::put_vector(out, lists_.incident_offset);
   binary::put_vector(out, lists_.incident);
   binary::put_vector(out, lists_.walls);
+  binary::put_vector(out, lists_.wall_loads);
   binary::put_vector(out, lists_.wall_offset);
   binary::put(out, lists_.with_memory);
   binary::put_vector(out, lists_.pair_memory);
@@ -1190,6 +1228,9 @@ void DemSystem::write_state(std::ostream& out) const
   binary::put(out, steps_);
   binary::put(out, losses_);
   binary::put_vector(out, wall_force_old_);
+  binary::put(out, recording_);
+  binary::put(out, record_requested_);
+  binary::put(out, loads_current_);
   if (!out) throw binary::StateError("DemSystem::write_state: write failed");
 }
 
@@ -1247,11 +1288,11 @@ void DemSystem::read_state(std::istream& in)
   }
   binary::get(in, mu_);
   search_.read_state(in);
-  binary::get_vector(in, lists_.pairs);
+  get_slots(in, version, lists_.pairs, lists_.pair_loads);
   scatter_.invalidate();
   binary::get_vector(in, lists_.incident_offset);
   binary::get_vector(in, lists_.incident);
-  binary::get_vector(in, lists_.walls);
+  get_slots(in, version, lists_.walls, lists_.wall_loads);
   binary::get_vector(in, lists_.wall_offset);
   if (version >= 3) {
     binary::get(in, lists_.with_memory);
@@ -1289,6 +1330,17 @@ void DemSystem::read_state(std::istream& in)
     losses_ = legacy::convert(old);
   }
   binary::get_vector(in, wall_force_old_);
+  if (version >= 4) {
+    binary::get(in, recording_);
+    binary::get(in, record_requested_);
+    binary::get(in, loads_current_);
+    if (recording_ != ContactForceRecording::every_step && recording_ != ContactForceRecording::on_request)
+      throw binary::StateError("checkpoint: unknown contact force recording");
+  } else {  // every step kept its loads in the slots
+    recording_ = ContactForceRecording::every_step;
+    record_requested_ = false;
+    loads_current_ = true;
+  }
   block_losses_.clear();
 }
 

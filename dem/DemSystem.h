@@ -241,6 +241,21 @@ public:
   void request_rebuild() { rebuild_requested_ = true; }
 
   // --- contacts
+  /// Which steps keep every contact's force for contacts(). `every_step` (the default):
+  /// all. `on_request`: only the step after record_contact_forces() (and the evaluations
+  /// that edits trigger outside step()); the other steps keep only what the step itself
+  /// needs, so the pair pass streams the 40-byte history slots and not the 48-byte loads
+  /// beside them (ContactLists.h): for drivers that sample contacts now and then (the
+  /// loading programs, the benchmark). The trajectory is the same bits either way.
+  enum class ContactForceRecording { every_step, on_request };
+  void set_contact_force_recording(ContactForceRecording r) { recording_ = r; }
+  ContactForceRecording contact_force_recording() const { return recording_; }
+  /// The next step keeps every contact's force (ContactForceRecording::on_request).
+  void record_contact_forces() { record_requested_ = true; }
+  /// True when the last force evaluation kept every contact's force.
+  bool contact_forces_current() const { return loads_current_; }
+  /// Touching contacts of the last force evaluation; throws std::logic_error when that
+  /// evaluation did not keep them (see ContactForceRecording).
   std::vector<ContactRecord> contacts() const;
   /// Touching particle-particle contacts (C of Z = 2C/N).
   std::size_t n_touching_pairs() const;
@@ -268,10 +283,11 @@ private:
   void rebuild();
   /// The contact forces at the current positions; with `kick_dt` > 0 pass B also gives
   /// each particle the step's closing half kick (step 4) as soon as its load is summed, and
-  /// the return value is that kick's local damping loss (0 otherwise).
-  double compute_forces(double dt_history, double kick_dt = 0.0);
+  /// the return value is that kick's local damping loss (0 otherwise). `record`: every
+  /// pair slot's load is kept (ContactLists::pair_loads), so contacts() may read them.
+  double compute_forces(double dt_history, double kick_dt = 0.0, bool record = true);
   template <class Law, bool Track>
-  double compute_forces_with(const Law& law, double dt_history, double kick_dt);
+  double compute_forces_with(const Law& law, double dt_history, double kick_dt, bool record);
   /// Half a kick of particle p with its current load; returns the local damping loss.
   double kick_particle(std::size_t p, double dt);
   /// body(p, sum, max) over all particles in the fixed reduction blocks, statically split
@@ -313,6 +329,9 @@ private:
   bool prefetch_ = false;        // prefetch_mode_ as decided at the last build
   bool ready_ = false;
   bool rebuild_requested_ = true;
+  ContactForceRecording recording_ = ContactForceRecording::every_step;
+  bool record_requested_ = false;  // record_contact_forces() before the next step
+  bool loads_current_ = true;      // the last force evaluation kept every pair slot's load
   double overdamped_ = 0.0;      // beta of first-order dynamics (0: Newtonian)
   double radius_growth_ = 0.0;   // bound on any radius increase since the last build
   double moved2_ = 0.0;          // largest squared displacement since the last build (last step)

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "dem/ContactLaw.h"
+#include "dem/ContactLists.h"
 #include "dem/EnergyLedger.h"
 #include "dem/PlaneWall.h"
 
@@ -79,6 +80,38 @@ inline PlaneWall convert(const PlaneWallV3& o)
   w.stiffness = o.stiffness;
   w.n_contacts = o.n_contacts;
   return w;
+}
+
+// Pair and wall slots up to version 3: the history and the last loads in one 88-byte record
+// (i or the wall, j or the particle, overlap, shear, force, lever). Version 4 keeps the
+// loads beside the slots (ContactLists.h).
+struct SlotV3
+{
+  Index a = 0, b = 0;
+  double overlap = 0.0;
+  Vec3 shear, force, lever;
+};
+
+/// The history and loads of an old slot, the bodies set by the caller.
+template <class Slot>
+inline void convert_history(const SlotV3& o, Slot& s, SlotLoad& load)
+{
+  s.overlap = o.overlap;
+  s.shear = o.shear;
+  load.force = o.force;
+  load.lever = o.lever;
+}
+inline void convert(const SlotV3& o, PairSlot& s, SlotLoad& load)
+{
+  s.i = o.a;
+  s.j = o.b;
+  convert_history(o, s, load);
+}
+inline void convert(const SlotV3& o, WallSlot& s, SlotLoad& load)
+{
+  s.wall = o.a;
+  s.particle = o.b;
+  convert_history(o, s, load);
 }
 
 }  // namespace geocomp::dem::legacy

@@ -80,19 +80,22 @@ public:
   LoadRow* rows() { return rows_.data(); }
   const std::uint32_t* targets() const { return target_.data(); }
 
-  /// The slot's loads into rows ri (body i) and rj (body j), as the gather sums them.
-  void add_pair(std::uint32_t ri, std::uint32_t rj, const PairSlot& s, double R_i, double R_j)
+  /// True when body p is shared (gathered in pass B1, not added into a row in pass A).
+  bool shared(Index p) const { return target_[p] == kShared; }
+
+  /// A slot's loads into rows ri (body i) and rj (body j), as the gather sums them.
+  void add_pair(std::uint32_t ri, std::uint32_t rj, const SlotLoad& load, double overlap, double R_i, double R_j)
   {
     LoadRow& a = rows_[ri];
     LoadRow& b = rows_[rj];
     for (int k = 0; k < 3; ++k) {
-      a.f[k] -= s.force[k];
-      b.f[k] += s.force[k];
+      a.f[k] -= load.force[k];
+      b.f[k] += load.force[k];
     }
-    const double arm_i = R_i - 0.5 * s.overlap, arm_j = R_j - 0.5 * s.overlap;
+    const double arm_i = R_i - 0.5 * overlap, arm_j = R_j - 0.5 * overlap;
     for (int k = 0; k < 3; ++k) {
-      a.t[k] -= arm_i * s.lever[k];
-      b.t[k] -= arm_j * s.lever[k];
+      a.t[k] -= arm_i * load.lever[k];
+      b.t[k] -= arm_j * load.lever[k];
     }
   }
   /// The rolling moment of a slot: +M_r on j, -M_r on i (after add_pair, as the gather).

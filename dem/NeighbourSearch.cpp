@@ -211,6 +211,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   if (lists.pairs.capacity() < n_pairs) lists.pairs.reserve(n_pairs + n_pairs / 8);
   lists.pairs.resize(n_pairs);
   lists.pair_memory.resize(memory ? n_pairs : 0);
+  lists.pair_loads.assign(n_pairs, SlotLoad{});  // the next force pass writes them
   const auto& id = store.id;
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t a = 0; a < std::int64_t(n); ++a) {
@@ -228,8 +229,6 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
       const HistoryEntry* h = find_pair_history(pair_key(id[a], id[b]));
       s.overlap = h ? h->overlap : 0.0;
       s.shear = h ? (id_order ? h->shear : Vec3(-h->shear)) : Vec3::Zero();
-      s.force.setZero();
-      s.lever.setZero();
       if (memory)
         lists.pair_memory[k - 1] =
           oriented(find_memory(pair_memory_archive_, broken_pairs_, pair_key(id[a], id[b])), id_order);
@@ -277,6 +276,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
     }
     lists.wall_offset[p + 1] = std::uint32_t(lists.walls.size());
   }
+  lists.wall_loads.assign(lists.walls.size(), SlotLoad{});
 
   x_ref_ = store.x;
   wall_ref_.resize(walls.size());

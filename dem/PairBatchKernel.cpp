@@ -91,6 +91,7 @@ namespace {
 struct Batch
 {
   unsigned char* slot[kLanes];
+  std::size_t index[kLanes];  ///< the slots' indices (their loads' places)
   std::uint32_t ii[kLanes], jj[kLanes];
   int lanes;
   // Stage 1: the kinematics (1a: the geometry; 1b: the velocities), the Coulomb coefficient.
@@ -275,7 +276,8 @@ std::size_t take_batch(const PairBatchArgs& a, const TouchingRing& ring, std::si
   const std::size_t e = at + std::size_t(b) * kLanes;
   B.lanes = count - b * kLanes < kLanes ? count - b * kLanes : kLanes;
   for (int l = 0; l < kLanes; ++l) {
-    B.slot[l] = a.slots + ring.slot[e + l] * a.layout.size;
+    B.index[l] = std::size_t(ring.slot[e + l]);
+    B.slot[l] = a.slots + B.index[l] * a.layout.size;
     B.ii[l] = std::uint32_t(ring.ij[e + l]);
     B.jj[l] = std::uint32_t(ring.ij[e + l] >> 32);
   }
@@ -370,11 +372,11 @@ void law_stages(KernelState& st, Batch* chunk, int n_batches)
                 : law.k_t_is_ratio                        ? splat(1.0 / (law.k_t * law.k_n))
                                                           : splat(1.0 / law.k_t);
     P3 xi;
-    if (L.contiguous_outputs) {  // the slot's spring: (x, y, z, the next double of the slot) per lane, transposed
-      __m256d a0 = _mm256_loadu_pd(&slot_double(B.slot[0], L.shear)), a1 = _mm256_loadu_pd(&slot_double(B.slot[1], L.shear));
-      __m256d a2 = _mm256_loadu_pd(&slot_double(B.slot[2], L.shear)), a3 = _mm256_loadu_pd(&slot_double(B.slot[3], L.shear));
+    if (L.contiguous_history) {  // the slot's (overlap, spring) per lane, transposed
+      __m256d a0 = _mm256_loadu_pd(&slot_double(B.slot[0], L.overlap)), a1 = _mm256_loadu_pd(&slot_double(B.slot[1], L.overlap));
+      __m256d a2 = _mm256_loadu_pd(&slot_double(B.slot[2], L.overlap)), a3 = _mm256_loadu_pd(&slot_double(B.slot[3], L.overlap));
       transpose4(a0, a1, a2, a3);
-      xi = {Pack(a0), Pack(a1), Pack(a2)};
+      xi = {Pack(a1), Pack(a2), Pack(a3)};
     } else {
       for (int l = 0; l < kLanes; ++l) {
         xi.x[l] = slot_double(B.slot[l], L.shear);
@@ -422,24 +424,12 @@ void law_stages(KernelState& st, Batch* chunk, int n_batches)
     const P3 out_lever = cross(B.n, f_t);
     const P3& out_shear = xi_new;
     const Pack out_overlap = B.delta;
-    if (L.contiguous_outputs) {
-      // overlap, shear, force, lever are ten consecutive doubles of a slot: two 4x4
-      // transposes and one 4x2 give each lane's row, stored with 256- and 128-bit stores.
+    // The slot's history: overlap and spring, one 4x4 transpose and a 256-bit store per lane.
+    if (L.contiguous_history) {
       __m256d q0 = __m256d(out_overlap), q1 = __m256d(out_shear.x), q2 = __m256d(out_shear.y), q3 = __m256d(out_shear.z);
-      __m256d h0 = __m256d(out_force.x), h1 = __m256d(out_force.y), h2 = __m256d(out_force.z), h3 = __m256d(out_lever.x);
       transpose4(q0, q1, q2, q3);
-      transpose4(h0, h1, h2, h3);
-      const __m256d ly = __m256d(out_lever.y), lz = __m256d(out_lever.z);
-      const __m256d lo = _mm256_unpacklo_pd(ly, lz), hi = _mm256_unpackhi_pd(ly, lz);  // (y0 z0 y2 z2), (y1 z1 y3 z3)
-      const __m256d rows[kLanes] = {q0, q1, q2, q3}, rows2[kLanes] = {h0, h1, h2, h3};
-      const __m128d tail[kLanes] = {_mm256_castpd256_pd128(lo), _mm256_castpd256_pd128(hi), _mm256_extractf128_pd(lo, 1),
-                                    _mm256_extractf128_pd(hi, 1)};
-      for (int l = 0; l < B.lanes; ++l) {
-        double* row = &slot_double(B.slot[l], L.overlap);
-        _mm256_storeu_pd(row, rows[l]);
-        _mm256_storeu_pd(row + 4, rows2[l]);
-        _mm_storeu_pd(row + 8, tail[l]);
-      }
+      const __m256d rows[kLanes] = {q0, q1, q2, q3};
+      for (int l = 0; l < B.lanes; ++l) _mm256_storeu_pd(&slot_double(B.slot[l], L.overlap), rows[l]);
     } else {
       for (int l = 0; l < B.lanes; ++l) {
         unsigned char* s = B.slot[l];
@@ -447,12 +437,34 @@ void law_stages(KernelState& st, Batch* chunk, int n_batches)
         slot_double(s, L.shear) = out_shear.x[l];
         slot_double(s, L.shear + 8) = out_shear.y[l];
         slot_double(s, L.shear + 16) = out_shear.z[l];
-        slot_double(s, L.force) = out_force.x[l];
-        slot_double(s, L.force + 8) = out_force.y[l];
-        slot_double(s, L.force + 16) = out_force.z[l];
-        slot_double(s, L.lever) = out_lever.x[l];
-        slot_double(s, L.lever + 8) = out_lever.y[l];
-        slot_double(s, L.lever + 16) = out_lever.z[l];
+      }
+    }
+
+    // The bodies' rows, and which lanes store their loads (all when recording; else the
+    // lanes with a shared body, whose loads pass B gathers).
+    std::uint32_t row_i[kLanes] = {}, row_j[kLanes] = {};
+    int keep = a.record_loads ? (1 << B.lanes) - 1 : 0;
+    if (a.rows)
+      for (int l = 0; l < B.lanes; ++l) {
+        row_i[l] = a.row_of[B.ii[l]];
+        row_j[l] = a.row_of[B.jj[l]];
+        if (row_i[l] == a.shared || row_j[l] == a.shared) keep |= 1 << l;
+      }
+    if (keep != 0) {
+      // force and lever are six consecutive doubles of a load: a 4x4 transpose and a 4x2
+      // give each lane's, stored with a 256- and a 128-bit store.
+      __m256d h0 = __m256d(out_force.x), h1 = __m256d(out_force.y), h2 = __m256d(out_force.z), h3 = __m256d(out_lever.x);
+      transpose4(h0, h1, h2, h3);
+      const __m256d ly = __m256d(out_lever.y), lz = __m256d(out_lever.z);
+      const __m256d lo = _mm256_unpacklo_pd(ly, lz), hi = _mm256_unpackhi_pd(ly, lz);  // (y0 z0 y2 z2), (y1 z1 y3 z3)
+      const __m256d head[kLanes] = {h0, h1, h2, h3};
+      const __m128d tail[kLanes] = {_mm256_castpd256_pd128(lo), _mm256_castpd256_pd128(hi), _mm256_extractf128_pd(lo, 1),
+                                    _mm256_extractf128_pd(hi, 1)};
+      for (int l = 0; l < B.lanes; ++l) {
+        if (!(keep & (1 << l))) continue;
+        double* load = a.loads + 6 * B.index[l];
+        _mm256_storeu_pd(load, head[l]);
+        _mm_storeu_pd(load + 4, tail[l]);
       }
     }
 
@@ -469,7 +481,7 @@ void law_stages(KernelState& st, Batch* chunk, int n_batches)
       transpose4(j0, j1, j2, j3);
       const __m256d F[kLanes] = {f0, f1, f2v, f3}, TI[kLanes] = {i0, i1, i2, i3}, TJ[kLanes] = {j0, j1, j2, j3};
       for (int l = 0; l < B.lanes; ++l) {
-        const std::uint32_t ri = a.row_of[B.ii[l]], rj = a.row_of[B.jj[l]];
+        const std::uint32_t ri = row_i[l], rj = row_j[l];
         double* const bi = a.rows + 8 * std::size_t(ri == a.shared ? a.junk_row + l : ri);
         double* const bj = a.rows + 8 * std::size_t(rj == a.shared ? a.junk_row + kLanes + l : rj);
         _mm256_store_pd(bi, _mm256_sub_pd(_mm256_load_pd(bi), F[l]));
@@ -502,11 +514,8 @@ void clear_slot(const PairBatchArgs& a, std::size_t c)
   const double* xi = &slot_double(s, L.shear);
   if (slot_double(s, L.overlap) == 0.0 && xi[0] == 0.0 && xi[1] == 0.0 && xi[2] == 0.0) return;
   slot_double(s, L.overlap) = 0.0;
-  for (std::size_t k = 0; k < 3; ++k) {
-    slot_double(s, L.shear + 8 * k) = 0.0;
-    slot_double(s, L.force + 8 * k) = 0.0;
-    slot_double(s, L.lever + 8 * k) = 0.0;
-  }
+  for (std::size_t k = 0; k < 3; ++k) slot_double(s, L.shear + 8 * k) = 0.0;
+  std::fill_n(a.loads + 6 * c, 6, 0.0);
 }
 
 /// The wall contact test of DemSystem pass A on wall slots [c0, c0 + lanes): PlaneWall::gap

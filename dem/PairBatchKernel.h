@@ -53,10 +53,9 @@ struct PairSlotLayout
 {
   std::size_t size = 0;                 ///< sizeof(PairSlot)
   std::size_t i = 0, j = 0;             ///< offsets of the two uint32 storage indices
-  std::size_t overlap = 0, shear = 0, force = 0, lever = 0;  ///< offsets of the doubles
-  /// True when overlap, shear, force and lever are ten consecutive doubles and the shear
-  /// is followed by at least one more double of the slot (read, never used).
-  bool contiguous_outputs = false;
+  std::size_t overlap = 0, shear = 0;   ///< offsets of the doubles
+  /// True when overlap and shear are four consecutive doubles of the slot.
+  bool contiguous_history = false;
 };
 
 /// The constants of a LinearSpringDashpot law, as the scalar parts use them.
@@ -87,6 +86,11 @@ struct PairBatchArgs
   const double* inv_mass = nullptr;
   unsigned char* slots = nullptr; ///< the PairSlot array
   PairSlotLayout layout;
+  /// The slots' loads (SlotLoad, ContactLists.h: force then lever, 6 doubles a slot),
+  /// written for every touching slot when `record_loads`, else only for the slots with a
+  /// shared body (their loads are gathered in pass B), and zeroed for slots that come apart.
+  double* loads = nullptr;
+  bool record_loads = true;
   LinearLawConstants law;
   double mu = 0.0;                ///< Coulomb coefficient between particles
   double dt = 0.0;                ///< history increment (0: evaluate without advancing)
@@ -102,7 +106,7 @@ struct PairBatchArgs
   const std::uint32_t* row_of = nullptr;
   std::uint32_t shared = 0, junk_row = 0;
   /// Wall slots (evaluate_linear_walls_batched): the slots are WallSlots, whose layout is a
-  /// PairSlot's with i the wall and j the particle; the unbounded plane walls as arrays
+  /// PairSlot's with i the wall and j the particle (their loads always recorded); the unbounded plane walls as arrays
   /// (point, normal and velocity: 3 per wall; the Coulomb coefficient mu_p: 1 per wall).
   const double* wall_point = nullptr;
   const double* wall_normal = nullptr;

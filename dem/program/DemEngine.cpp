@@ -150,6 +150,9 @@ void clear_interrupt()
 DemEngine::DemEngine(DemSystem system, const DemEngineParameters &parameters)
   : system_(std::move(system)), prm_(parameters)
 {
+  // The engine reads contact forces only where advance_to lands (measure, snapshot,
+  // Love-Weber stress): its last step records them, the others stream less memory.
+  system_.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
   if (system_.n_walls() < 6)
     throw std::invalid_argument("DemEngine: the system needs the six walls of add_box() as walls 0..5");
   for (int a = 0; a < 3; ++a)
@@ -348,7 +351,8 @@ void DemEngine::advance_to(double t_end)
         throw Interrupted(std::max(signal, 0), prm_.checkpoint_file, time());
       }
     }
-    if (remaining <= dt * (1.0 + 1e-9)) {
+    if (remaining <= dt * (1.0 + 1e-9)) {  // the last step: measurements follow it
+      system_.record_contact_forces();
       system_.set_time_step(remaining);
       step();
       system_.set_time_step(dt);
@@ -613,6 +617,7 @@ void DemEngine::read_checkpoint(const std::filesystem::path &path)
     throw binary::StateError(path.string() + ": " + e.what());
   }
   system_ = std::move(system);
+  system_.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
   s_ = std::move(s);
 }
 

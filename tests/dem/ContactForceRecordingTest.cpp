@@ -1,0 +1,92 @@
+// Contact forces kept on request (DemSystem::ContactForceRecording): between requests the
+// pair pass keeps the slots' histories and only the loads of the bodies two workers share
+// (pass B1 gathers those). The trajectory must not notice, on any pair path or thread
+// count, and the requested step must list the contacts every_step lists.
+#include "dem/DemSystem.h"
+#include "TestSystems.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+using namespace geocomp::dem;
+
+namespace {
+
+using Recording = DemSystem::ContactForceRecording;
+
+/// 8^3 compressed frictional spheres (about 1 100 pair slots in five blocks, so two and
+/// three workers share bodies) with inward-moving walls.
+void make_specimen(DemSystem& sys, const ContactModel& law, bool batched, int threads, Recording recording)
+{
+  sys.set_contact_model(law);
+  sys.set_friction(0.4);
+  sys.set_batched_pairs(batched);
+  test::fill_box(sys, 8, 0.01, 0.3, 7u, 0.2);
+  for (std::size_t w = 0; w < 6; ++w) sys.set_wall_velocity(w, 0.05 * sys.wall(w).normal);
+  const double m = 4.0 / 3.0 * M_PI * 1e-6 * 2650.0;
+  sys.set_time_step(0.1 * std::sqrt(m / 1e5));
+  sys.set_num_threads(threads);
+  sys.set_contact_force_recording(recording);
+}
+
+/// The state's bits after 1200 steps (the last one recorded), then every contact's ids,
+/// overlap and force.
+std::vector<double> run_and_record(const ContactModel& law, bool batched, int threads, Recording recording)
+{
+  DemSystem sys;
+  make_specimen(sys, law, batched, threads, recording);
+  sys.run(1199);
+  sys.record_contact_forces();
+  sys.run(1);
+  std::vector<double> bits = test::state_bits(sys, true);
+  for (std::size_t w = 0; w < 6; ++w) bits.insert(bits.end(), sys.wall(w).force.data(), sys.wall(w).force.data() + 3);
+  const std::vector<ContactRecord> contacts = sys.contacts();
+  EXPECT_GT(contacts.size(), 200u);
+  for (const ContactRecord& c : contacts) {
+    bits.insert(bits.end(), {double(c.wall), double(c.i), double(c.j), c.overlap});
+    bits.insert(bits.end(), c.force.data(), c.force.data() + 3);
+  }
+  return bits;
+}
+
+}  // namespace
+
+TEST(ContactForceRecording, OnRequestKeepsTheTrajectoryBitsAndListsTheRequestedStep)
+{
+  const ContactModel laws[] = {test::linear_law(1e5, 0.5),
+                               HertzMindlin(HertzNormal({1e8, 0.25, HertzNormal::Damping::restitution, 0.5, 0.0, true}),
+                                            MindlinTangential({1e8, 0.25, 1.0}))};
+  struct Case
+  {
+    const ContactModel* law;
+    bool batched;
+    const char* name;
+  };
+  const Case cases[] = {{&laws[0], true, "linear, batched"}, {&laws[0], false, "linear, scalar"}, {&laws[1], false, "Hertz-Mindlin"}};
+  for (const Case& c : cases) {
+    const std::vector<double> every = run_and_record(*c.law, c.batched, 1, Recording::every_step);
+    for (int threads = 1; threads <= 3; ++threads)
+      EXPECT_TRUE(test::bitwise_equal(every, run_and_record(*c.law, c.batched, threads, Recording::on_request)))
+        << c.name << ", " << threads << " threads";
+  }
+}
+
+TEST(ContactForceRecording, ContactsRefuseAStepThatDidNotRecord)
+{
+  DemSystem sys;
+  make_specimen(sys, test::linear_law(1e5, 0.5), true, 2, Recording::on_request);
+  sys.run(300);
+  ASSERT_GT(sys.n_touching_pairs(), 100u);
+  EXPECT_FALSE(sys.contact_forces_current());
+  EXPECT_THROW(sys.contacts(), std::logic_error);
+  sys.record_contact_forces();
+  sys.run(1);
+  EXPECT_TRUE(sys.contact_forces_current());
+  EXPECT_GT(sys.contacts().size(), 100u);
+  sys.run(1);  // the request served one step
+  EXPECT_THROW(sys.contacts(), std::logic_error);
+  sys.set_contact_force_recording(Recording::every_step);
+  sys.run(1);
+  EXPECT_GT(sys.contacts().size(), 100u);
+}
