@@ -215,9 +215,9 @@ public:
   /// The kick and drift sweeps four spheres at a time: batched, and no local damping
   /// (the vector sweeps have none).
   bool batched_sweeps() const { return batched_pairs() && local_damping_ == 0.0 && kick_drift_kernel_available(); }
-  /// Software prefetch in the batched pair kernel (the slots two groups of 32 ahead, the
-  /// j bodies' position, velocities and load row one group ahead). It saves a tenth to a
-  /// fifth of the step when the particles and lists outgrow the last-level cache (100 000
+  /// Software prefetch in the batched pair kernel (the slots 24 ahead of the test, the
+  /// j bodies' position, velocities and load row 12 ahead). It saves about a seventh
+  /// of the step when the particles and lists outgrow the last-level cache (100 000
   /// spheres in the shared benchmark's packing) and costs a few percent when they fit
   /// (10 000). `automatic` (the default) turns it on at each neighbour-list build when
   /// memory_bytes() exceeds kPrefetchFootprint. Same bits either way.

@@ -95,7 +95,7 @@ struct PairBatchArgs
   double mu = 0.0;                ///< Coulomb coefficient between particles
   double dt = 0.0;                ///< history increment (0: evaluate without advancing)
   bool track_losses = false;
-  /// Software prefetch of the slots and the j bodies a group or two ahead of the test
+  /// Software prefetch of the slots and the j bodies a few batches ahead of the test
   /// (DemSystem::set_prefetch: for lists larger than the last-level cache).
   bool prefetch = false;
   /// Where the slots' loads are added (LoadScatter.h): rows of 8 doubles (force, 0,
