@@ -201,6 +201,21 @@ struct TouchingRing
 
 void clear_slot(const PairBatchArgs& a, std::size_t c);
 
+/// True when slot c holds history (an overlap or a spring other than zero): an apart slot
+/// is cleared only then (as the scalar path), so the settled apart slots cost one vector
+/// compare and no write.
+[[gnu::always_inline]] inline bool holds_history(const PairBatchArgs& a, std::size_t c)
+{
+  const PairSlotLayout& L = a.layout;
+  unsigned char* s = a.slots + c * L.size;
+  if (L.contiguous_history) {
+    const __m256d h = _mm256_loadu_pd(&slot_double(s, L.overlap));  // overlap, spring
+    return _mm256_movemask_pd(_mm256_cmp_pd(h, _mm256_setzero_pd(), _CMP_NEQ_UQ)) != 0;
+  }
+  const double* xi = &slot_double(s, L.shear);
+  return !(slot_double(s, L.overlap) == 0.0 && xi[0] == 0.0 && xi[1] == 0.0 && xi[2] == 0.0);
+}
+
 /// A batch of slots under the contact test: the slots' bodies and what the test computed.
 struct TestedBatch
 {
@@ -236,8 +251,10 @@ struct TestedBatch
     const __m256i slots = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(t.c0)), _mm256_set_epi64x(3, 2, 1, 0));
     ring.append(mask, t.d, t.r2, t.ri, t.rj, _mm256_set_epi64x(ij[3], ij[2], ij[1], ij[0]), slots);
   }
-  for (int apart = valid & ~mask; apart != 0; apart &= apart - 1)
-    clear_slot(a, t.c0 + std::size_t(__builtin_ctz(unsigned(apart))));
+  for (int apart = valid & ~mask; apart != 0; apart &= apart - 1) {
+    const std::size_t c = t.c0 + std::size_t(__builtin_ctz(unsigned(apart)));
+    if (holds_history(a, c)) clear_slot(a, c);
+  }
 }
 
 /// The contact test of DemSystem pass A on slots [c0, c0 + lanes): appends the touching
@@ -505,14 +522,11 @@ void law_stages(KernelState& st, Batch* chunk, int n_batches)
   }
 }
 
-/// Gives an apart slot zeros, written only when it did not already hold them (as the
-/// scalar path).
+/// Gives an apart slot that still holds history zeros, and its load.
 void clear_slot(const PairBatchArgs& a, std::size_t c)
 {
   const PairSlotLayout& L = a.layout;
   unsigned char* s = a.slots + c * L.size;
-  const double* xi = &slot_double(s, L.shear);
-  if (slot_double(s, L.overlap) == 0.0 && xi[0] == 0.0 && xi[1] == 0.0 && xi[2] == 0.0) return;
   slot_double(s, L.overlap) = 0.0;
   for (std::size_t k = 0; k < 3; ++k) slot_double(s, L.shear + 8 * k) = 0.0;
   std::fill_n(a.loads + 6 * c, 6, 0.0);
