@@ -856,28 +856,34 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       rows[p] = LoadRow{{f.x(), f.y(), f.z(), 0.0}, {t.x(), t.y(), t.z(), 0.0}};
     }
     // Pass B2: every body's row, its wall slots, then the closing half kick when asked for
-    // (four bodies without wall slots at a time in vectors: ParticleSweepKernel.h).
+    // (four bodies at a time in vectors: ParticleSweepKernel.h). The wall slots' loads go
+    // into the body's row first, in slot order.
+    const auto add_wall_loads = [&](std::size_t p) {
+      if (woff[p] == woff[p + 1]) return;
+      const double Rp = R[p];
+      Vec3 f(rows[p].f[0], rows[p].f[1], rows[p].f[2]);
+      Vec3 t(rows[p].t[0], rows[p].t[1], rows[p].t[2]);
+      for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
+        f += wloads[e].force;
+        t -= (Rp - 0.5 * wslots[e].overlap) * wloads[e].lever;
+        if constexpr (Law::has_rolling) t += wmem[e].rolling;
+      }
+      rows[p] = LoadRow{{f.x(), f.y(), f.z(), 0.0}, {t.x(), t.y(), t.z(), 0.0}};
+    };
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < std::int64_t(nb_particles); ++b) {
       double kick_loss = 0.0;
       const std::size_t p_end = std::min(n, std::size_t(b + 1) * kBlock);
       for (std::size_t p = std::size_t(b) * kBlock; p < p_end; ++p) {
-        if (closing.rows && p + 4 <= p_end && woff[p] == woff[p + 4]) {
+        if (closing.rows && p + 4 <= p_end) {
+          for (std::size_t q = p; q < p + 4; ++q) add_wall_loads(q);
           close_and_kick4(closing, p);
           p += 3;
           continue;
         }
-        const double Rp = R[p];
-        Vec3 f(rows[p].f[0], rows[p].f[1], rows[p].f[2]);
-        Vec3 t(rows[p].t[0], rows[p].t[1], rows[p].t[2]);
-        for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
-          const WallSlot& s = wslots[e];
-          f += wloads[e].force;
-          t -= (Rp - 0.5 * s.overlap) * wloads[e].lever;
-          if constexpr (Law::has_rolling) t += wmem[e].rolling;
-        }
-        store_.force[p] = f;
-        store_.torque[p] = t;
+        add_wall_loads(p);
+        store_.force[p] = Vec3(rows[p].f[0], rows[p].f[1], rows[p].f[2]);
+        store_.torque[p] = Vec3(rows[p].t[0], rows[p].t[1], rows[p].t[2]);
         if (kick_dt > 0.0) kick_loss += kick_particle(p, kick_dt);
       }
       kick_losses_[b] = kick_loss;
