@@ -13,6 +13,21 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+/// n steps of which only the last keeps every contact's force
+/// (DemSystem::ContactForceRecording::on_request for their duration): the preparation reads
+/// contacts() only after a chunk of steps, and the steps before stream less memory.
+void run_recording_last(DemSystem &system, std::uint64_t n)
+{
+  if (n == 0)
+    return;
+  const DemSystem::ContactForceRecording mode = system.contact_force_recording();
+  system.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
+  system.run(n - 1);
+  system.record_contact_forces();
+  system.step();
+  system.set_contact_force_recording(mode);
+}
 } // namespace
 
 // @sect4{Random placement}
@@ -148,7 +163,7 @@ GrowthResult grow_radii(DemSystem &system, const std::vector<double> &target, co
       radii[id] = f_next == 1.0 ? target[id] : f_next * target[id];
     system.set_radii(radii);
     f = f_next;
-    system.run(g.interval);
+    run_recording_last(system, g.interval);
     if (progress && ++chunks % 1000 == 0)
       progress("growth", system.time() - time0);
   }
@@ -177,9 +192,13 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
     system.set_local_damping(0.0);
   while (true) {
     if (!k.fire) {
-      system.run(k.check_steps);
+      run_recording_last(system, k.check_steps);
     } else {
+      const DemSystem::ContactForceRecording mode = system.contact_force_recording();
+      system.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
       for (std::uint64_t n = 0; n < k.check_steps; ++n) {
+        if (n + 1 == k.check_steps)
+          system.record_contact_forces(); // rest_state reads the contacts after this chunk
         system.step();
         if (system.fire_velocities(alpha) > 0.0) {
           if (++positive > k.fire_delay) {
@@ -193,6 +212,7 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
         }
         system.set_time_step(dt);
       }
+      system.set_contact_force_recording(mode);
     }
     r.rest = rest_state(system);
     r.converged = k.satisfied_by(r.rest);
