@@ -413,7 +413,7 @@ void DemSystem::prepare()
       (radius_growth_ > 0.0 && search_.needs_rebuild(with_growth(moved2_, radius_growth_), walls_)))
     rebuild();
   if (!ready_) {
-    compute_forces(0.0, 0.0, true);  // forces at the current state, histories not advanced (kept)
+    compute_forces(0.0, 0.0, true);  // forces at the current state, histories not advanced, all kept
     ready_ = true;
   }
 }
@@ -848,7 +848,7 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
         const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
         f += sign * load.force;
         t -= (Rp - 0.5 * s.overlap) * load.lever;  // T = -(R - delta/2) n x F_t
-        if constexpr (Law::has_rolling) {       // M_r on j, -M_r on i
+        if constexpr (Law::has_rolling) {          // M_r on j, -M_r on i
           if (inc[e] & 1u) t += pmem[inc[e] >> 1].rolling;
           else t -= pmem[inc[e] >> 1].rolling;
         }

@@ -1,8 +1,8 @@
 // @sect3{The LoadScatter class: contact loads added into the bodies during pass A}
 //
 // Why it exists: the gather of pass B (ContactLists.h) read every pair slot twice, once
-// for each body, and the j side's reads jump through the whole slot array (88-byte slots,
-// a random cache line each; out of the last-level cache at 100 000 spheres). It was a
+// for each body, and the j side's reads jump through the whole slot array (88-byte slots
+// then, a random cache line each; out of the last-level cache at 100 000 spheres). It was a
 // third of the step. Here each slot's loads are added into both bodies as soon as the
 // slot is computed, in slot order, into a row of 8 doubles per body (force, torque; one
 // cache line), so the slots are streamed once.
@@ -13,8 +13,9 @@
 // w mod T). A body whose slots all fall into one worker's range is *private* to it:
 // that worker adds its slots into the body's row in slot order, starting from $m\,g$,
 // which is the gather's sum, operation for operation. A body with slots in two ranges is
-// *shared*: its slots go to the worker's junk row, and the gather (incident slots in
-// ascending order) computes it after pass A, the shared bodies split evenly among the
+// *shared*: its slots go to the worker's junk row and keep their loads beside the slots
+// (ContactLists::pair_loads), and the gather (incident slots in ascending order) computes
+// it after pass A, the shared bodies split evenly among the
 // threads (they lie in one layer of storage). Every body gets the gather's bits, so the
 // trajectories do not depend on W or on the threads (test `Determinism.*`); the share of
 // shared bodies is the layer where two workers' storage ranges meet (none for W = 1).

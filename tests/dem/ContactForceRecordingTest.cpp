@@ -15,18 +15,10 @@ namespace {
 
 using Recording = DemSystem::ContactForceRecording;
 
-/// 8^3 compressed frictional spheres (about 1 100 pair slots in five blocks, so two and
-/// three workers share bodies) with inward-moving walls.
+/// test::compressed_box (two and three workers share bodies) with the given recording.
 void make_specimen(DemSystem& sys, const ContactModel& law, bool batched, int threads, Recording recording)
 {
-  sys.set_contact_model(law);
-  sys.set_friction(0.4);
-  sys.set_batched_pairs(batched);
-  test::fill_box(sys, 8, 0.01, 0.3, 7u, 0.2);
-  for (std::size_t w = 0; w < 6; ++w) sys.set_wall_velocity(w, 0.05 * sys.wall(w).normal);
-  const double m = 4.0 / 3.0 * M_PI * 1e-6 * 2650.0;
-  sys.set_time_step(0.1 * std::sqrt(m / 1e5));
-  sys.set_num_threads(threads);
+  test::compressed_box(sys, law, batched, threads);
   sys.set_contact_force_recording(recording);
 }
 

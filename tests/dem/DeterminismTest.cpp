@@ -52,20 +52,11 @@ TEST(Determinism, OneAndTwoThreadsAreBitwiseIdentical)
 
 namespace {
 
-/// 8^3 compressed frictional spheres (about 1 100 pair slots: five blocks of 256, so
-/// two to four workers each get slots and the bodies where their ranges meet are shared),
-/// run for 1500 steps with `threads` threads under `law`.
+/// test::compressed_box run for 1500 steps with `threads` threads under `law`.
 std::vector<double> run_with(const ContactModel& law, bool batched, int threads)
 {
   DemSystem sys;
-  sys.set_contact_model(law);
-  sys.set_friction(0.4);
-  sys.set_batched_pairs(batched);
-  test::fill_box(sys, 8, 0.01, 0.3, 7u, 0.2);
-  for (std::size_t w = 0; w < 6; ++w) sys.set_wall_velocity(w, 0.05 * sys.wall(w).normal);
-  const double m = 4.0 / 3.0 * M_PI * 1e-6 * 2650.0;
-  sys.set_time_step(0.1 * std::sqrt(m / 1e5));
-  sys.set_num_threads(threads);
+  test::compressed_box(sys, law, batched, threads);
   sys.run(1500);
   EXPECT_GT(sys.n_touching_pairs(), 200u);
   std::vector<double> bits = test::state_bits(sys, true);

@@ -3,6 +3,7 @@
 
 #include "dem/DemSystem.h"
 
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -43,6 +44,22 @@ inline void add_renumbered_backwards(DemSystem& sys, const DemSystem& ref, doubl
   for (ParticleId id = ParticleId(ref.n_particles()); id-- > 0;)
     sys.add_sphere(ref.position(id), R, 2650.0, ref.velocity(id), ref.angular_velocity(id));
   for (std::size_t w = 0; w < ref.n_walls(); ++w) sys.add_wall(ref.wall(w));
+}
+
+/// 8^3 compressed frictional spheres (R = 10 mm, mu = 0.4, the walls moving in at
+/// 0.05 m/s, dt a tenth of sqrt(m/k) at k = 1e5 N/m) under `law`: about 1 100 pair slots,
+/// five blocks of 256, so two to four workers each get slots and the bodies where their
+/// ranges meet are shared.
+inline void compressed_box(DemSystem& sys, const ContactModel& law, bool batched, int threads)
+{
+  sys.set_contact_model(law);
+  sys.set_friction(0.4);
+  sys.set_batched_pairs(batched);
+  fill_box(sys, 8, 0.01, 0.3, 7u, 0.2);
+  for (std::size_t w = 0; w < 6; ++w) sys.set_wall_velocity(w, 0.05 * sys.wall(w).normal);
+  const double m = 4.0 / 3.0 * M_PI * 1e-6 * 2650.0;
+  sys.set_time_step(0.1 * std::sqrt(m / 1e5));
+  sys.set_num_threads(threads);
 }
 
 /// Positions, velocities, spins, forces and orientations by particle id, then (with
