@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <stdexcept>
 
 using namespace geocomp::dem;
@@ -81,4 +82,33 @@ TEST(ContactForceRecording, ContactsRefuseAStepThatDidNotRecord)
   sys.set_contact_force_recording(Recording::every_step);
   sys.run(1);
   EXPECT_GT(sys.contacts().size(), 100u);
+}
+
+// A checkpoint written between requests holds the slots' histories, the loads as they
+// are and the recording state: the restored system refuses contacts() as the original
+// does, and both continue with the same bits and record the same contacts.
+TEST(ContactForceRecording, CheckpointCarriesTheRecordingState)
+{
+  DemSystem sys;
+  make_specimen(sys, test::linear_law(1e5, 0.5), true, 2, Recording::on_request);
+  sys.run(400);
+  std::stringstream state;
+  sys.write_state(state);
+  DemSystem restored;
+  restored.read_state(state);
+  EXPECT_EQ(restored.contact_force_recording(), Recording::on_request);
+  EXPECT_THROW(restored.contacts(), std::logic_error);
+  for (DemSystem* s : {&sys, &restored}) {
+    s->run(99);
+    s->record_contact_forces();
+    s->run(1);
+  }
+  EXPECT_TRUE(test::bitwise_equal(test::state_bits(sys, true), test::state_bits(restored, true)));
+  const std::vector<ContactRecord> a = sys.contacts(), b = restored.contacts();
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GT(a.size(), 100u);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].i, b[k].i);
+    EXPECT_EQ(a[k].force, b[k].force);
+  }
 }
