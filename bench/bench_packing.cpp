@@ -51,7 +51,12 @@ int main(int argc, char **argv)
   if (*end != '\0')
     return usage(argv[0], std::string("SEED: expected a non-negative integer, got '") + argv[3] + "'");
   const std::string out = argv[4];
-  const int threads = argc > 5 ? std::atoi(argv[5]) : 1;
+  long threads = 1;
+  if (argc > 5) {
+    threads = std::strtol(argv[5], &end, 10);
+    if (*end != '\0' || threads < 1 || threads > 1024)
+      return usage(argv[0], std::string("THREADS: expected an integer in [1, 1024], got '") + argv[5] + "'");
+  }
 
   geocomp::bench::BenchParameters b;
   b.mu = 0.0; // frictionless growth and rest, as the shared packings
@@ -68,7 +73,7 @@ int main(int argc, char **argv)
   for (std::size_t k = 0; k < centres.size(); ++k) sys.add_sphere(centres[k], start[k], b.rho);
   sys.add_box(lo, hi, 0.0);
   sys.set_skin(b.skin);
-  sys.set_num_threads(threads);
+  sys.set_num_threads(int(threads));
   sys.set_local_damping(0.3);
 
   GrowthSettings gs;
@@ -89,7 +94,12 @@ int main(int argc, char **argv)
     p.position.push_back(sys.position(id));
     p.radius.push_back(target[id]);
   }
-  write_xyzr(out, p);
+  try {
+    write_xyzr(out, p); // a temporary file renamed when complete
+  } catch (const PackingFileError &e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
   std::printf("geocomp-bench-packing N=%ld eta=%.4f L=%.9g m: growth %llu steps, rest %llu steps (%s: unbalanced %.2e, "
               "K/E %.2e), %.1f s; wrote %s\n",
               n, p.packing_fraction(), L, (unsigned long long)g.cost.steps, (unsigned long long)r.cost.steps,
