@@ -34,6 +34,8 @@ static_assert(sizeof(WallSlot) == sizeof(PairSlot) && offsetof(WallSlot, wall) =
                   offsetof(WallSlot, overlap) == offsetof(PairSlot, overlap) &&
                   offsetof(WallSlot, shear) == offsetof(PairSlot, shear),
               "the batched kernel reads wall slots with the pair slots' layout");
+static_assert(offsetof(PairSlot, shear) == offsetof(PairSlot, overlap) + sizeof(double),
+              "the batched kernel reads and writes a slot's overlap and spring as four consecutive doubles");
 static_assert(sizeof(SlotLoad) == 6 * sizeof(double) && offsetof(SlotLoad, lever) == 3 * sizeof(double),
               "the batched kernel writes a SlotLoad as six doubles: force, lever");
 
@@ -58,8 +60,7 @@ PairBatchArgs pair_batch_args(const LinearSpringDashpot& law, const ParticleStor
   const auto at = [&](const void* member) {
     return std::size_t(static_cast<const unsigned char*>(member) - reinterpret_cast<const unsigned char*>(&probe));
   };
-  a.layout = PairSlotLayout{sizeof(PairSlot), at(&probe.i), at(&probe.j), at(&probe.overlap), at(probe.shear.data())};
-  a.layout.contiguous_history = a.layout.shear == a.layout.overlap + 8;
+  a.layout = PairSlotLayout{sizeof(PairSlot), at(&probe.i), at(&probe.j), at(&probe.overlap)};
   a.loads = reinterpret_cast<double*>(lists.pair_loads.data());
   const LinearNormal::Parameters& np = law.normal().parameters();
   LinearLawConstants& c = a.law;
@@ -648,6 +649,7 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       wall_batch = pair_batch_args(law, store_, lists_, 0.0, dt_h, Track);
       wall_batch.slots = reinterpret_cast<unsigned char*>(wslots.data());
       wall_batch.loads = reinterpret_cast<double*>(wloads.data());
+      wall_batch.record_loads = true;  // the walls' records and pass B read every wall load
       wall_arrays_.resize(10 * walls_.size());
       double* const a = wall_arrays_.data();
       const std::size_t nw = walls_.size();

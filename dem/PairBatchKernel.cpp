@@ -208,12 +208,8 @@ void clear_slot(const PairBatchArgs& a, std::size_t c);
 {
   const PairSlotLayout& L = a.layout;
   unsigned char* s = a.slots + c * L.size;
-  if (L.contiguous_history) {
-    const __m256d h = _mm256_loadu_pd(&slot_double(s, L.overlap));  // overlap, spring
-    return _mm256_movemask_pd(_mm256_cmp_pd(h, _mm256_setzero_pd(), _CMP_NEQ_UQ)) != 0;
-  }
-  const double* xi = &slot_double(s, L.shear);
-  return !(slot_double(s, L.overlap) == 0.0 && xi[0] == 0.0 && xi[1] == 0.0 && xi[2] == 0.0);
+  const __m256d h = _mm256_loadu_pd(&slot_double(s, L.history));  // overlap, spring
+  return _mm256_movemask_pd(_mm256_cmp_pd(h, _mm256_setzero_pd(), _CMP_NEQ_UQ)) != 0;
 }
 
 /// A batch of slots under the contact test: the slots' bodies and what the test computed.
@@ -389,17 +385,11 @@ void law_stages(KernelState& st, Batch* chunk, int n_batches)
                 : law.k_t_is_ratio                        ? splat(1.0 / (law.k_t * law.k_n))
                                                           : splat(1.0 / law.k_t);
     P3 xi;
-    if (L.contiguous_history) {  // the slot's (overlap, spring) per lane, transposed
-      __m256d a0 = _mm256_loadu_pd(&slot_double(B.slot[0], L.overlap)), a1 = _mm256_loadu_pd(&slot_double(B.slot[1], L.overlap));
-      __m256d a2 = _mm256_loadu_pd(&slot_double(B.slot[2], L.overlap)), a3 = _mm256_loadu_pd(&slot_double(B.slot[3], L.overlap));
+    {  // the slot's (overlap, spring) per lane, transposed
+      __m256d a0 = _mm256_loadu_pd(&slot_double(B.slot[0], L.history)), a1 = _mm256_loadu_pd(&slot_double(B.slot[1], L.history));
+      __m256d a2 = _mm256_loadu_pd(&slot_double(B.slot[2], L.history)), a3 = _mm256_loadu_pd(&slot_double(B.slot[3], L.history));
       transpose4(a0, a1, a2, a3);
       xi = {Pack(a1), Pack(a2), Pack(a3)};
-    } else {
-      for (int l = 0; l < kLanes; ++l) {
-        xi.x[l] = slot_double(B.slot[l], L.shear);
-        xi.y[l] = slot_double(B.slot[l], L.shear + 8);
-        xi.z[l] = slot_double(B.slot[l], L.shear + 16);
-      }
     }
     {  // rotate_into_tangent_plane(xi, n, spin * dt)
       const P3& n = B.n;
@@ -442,19 +432,11 @@ void law_stages(KernelState& st, Batch* chunk, int n_batches)
     const P3& out_shear = xi_new;
     const Pack out_overlap = B.delta;
     // The slot's history: overlap and spring, one 4x4 transpose and a 256-bit store per lane.
-    if (L.contiguous_history) {
+    {
       __m256d q0 = __m256d(out_overlap), q1 = __m256d(out_shear.x), q2 = __m256d(out_shear.y), q3 = __m256d(out_shear.z);
       transpose4(q0, q1, q2, q3);
       const __m256d rows[kLanes] = {q0, q1, q2, q3};
-      for (int l = 0; l < B.lanes; ++l) _mm256_storeu_pd(&slot_double(B.slot[l], L.overlap), rows[l]);
-    } else {
-      for (int l = 0; l < B.lanes; ++l) {
-        unsigned char* s = B.slot[l];
-        slot_double(s, L.overlap) = out_overlap[l];
-        slot_double(s, L.shear) = out_shear.x[l];
-        slot_double(s, L.shear + 8) = out_shear.y[l];
-        slot_double(s, L.shear + 16) = out_shear.z[l];
-      }
+      for (int l = 0; l < B.lanes; ++l) _mm256_storeu_pd(&slot_double(B.slot[l], L.history), rows[l]);
     }
 
     // The bodies' rows, and which lanes store their loads (all when recording; else the
@@ -527,8 +509,7 @@ void clear_slot(const PairBatchArgs& a, std::size_t c)
 {
   const PairSlotLayout& L = a.layout;
   unsigned char* s = a.slots + c * L.size;
-  slot_double(s, L.overlap) = 0.0;
-  for (std::size_t k = 0; k < 3; ++k) slot_double(s, L.shear + 8 * k) = 0.0;
+  _mm256_storeu_pd(&slot_double(s, L.history), _mm256_setzero_pd());
   std::fill_n(a.loads + 6 * c, 6, 0.0);
 }
 

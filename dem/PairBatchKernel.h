@@ -53,9 +53,9 @@ struct PairSlotLayout
 {
   std::size_t size = 0;                 ///< sizeof(PairSlot)
   std::size_t i = 0, j = 0;             ///< offsets of the two uint32 storage indices
-  std::size_t overlap = 0, shear = 0;   ///< offsets of the doubles
-  /// True when overlap and shear are four consecutive doubles of the slot.
-  bool contiguous_history = false;
+  /// Offset of the history: the overlap and the three doubles of the spring, consecutive
+  /// (one 256-bit load or store per slot).
+  std::size_t history = 0;
 };
 
 /// The constants of a LinearSpringDashpot law, as the scalar parts use them.

@@ -14,19 +14,34 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// n steps of which only the last keeps every contact's force
-/// (DemSystem::ContactForceRecording::on_request for their duration): the preparation reads
-/// contacts() only after a chunk of steps, and the steps before stream less memory.
+/// DemSystem::ContactForceRecording::on_request while it lives, the caller's setting after:
+/// the preparation reads contacts() only after a chunk of steps, whose last step it asks to
+/// record, and the steps before stream less memory.
+class RecordOnRequest
+{
+public:
+  explicit RecordOnRequest(DemSystem &system) : system_(system), mode_(system.contact_force_recording())
+  {
+    system_.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
+  }
+  ~RecordOnRequest() { system_.set_contact_force_recording(mode_); }
+  RecordOnRequest(const RecordOnRequest &) = delete;
+  RecordOnRequest &operator=(const RecordOnRequest &) = delete;
+
+private:
+  DemSystem &system_;
+  DemSystem::ContactForceRecording mode_;
+};
+
+/// n steps of which only the last keeps every contact's force.
 void run_recording_last(DemSystem &system, std::uint64_t n)
 {
   if (n == 0)
     return;
-  const DemSystem::ContactForceRecording mode = system.contact_force_recording();
-  system.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
+  const RecordOnRequest scope(system);
   system.run(n - 1);
   system.record_contact_forces();
   system.step();
-  system.set_contact_force_recording(mode);
 }
 } // namespace
 
@@ -194,8 +209,7 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
     if (!k.fire) {
       run_recording_last(system, k.check_steps);
     } else {
-      const DemSystem::ContactForceRecording mode = system.contact_force_recording();
-      system.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
+      const RecordOnRequest scope(system);
       for (std::uint64_t n = 0; n < k.check_steps; ++n) {
         if (n + 1 == k.check_steps)
           system.record_contact_forces(); // rest_state reads the contacts after this chunk
@@ -212,7 +226,6 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
         }
         system.set_time_step(dt);
       }
-      system.set_contact_force_recording(mode);
     }
     r.rest = rest_state(system);
     r.converged = k.satisfied_by(r.rest);

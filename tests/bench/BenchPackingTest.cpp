@@ -1,8 +1,9 @@
 // geocomp-bench-packing (bench/bench_packing.cpp) makes the benchmark's larger specimens the
 // way the shared ones were made. Its file must be a jammed packing at the asked packing
-// fraction, the same for the same seed and any thread count; bad arguments are refused with exit code 2, naming
-// the argument, and write nothing.
+// fraction, the same for the same seed and any thread count; bad arguments are refused with
+// exit code 2, naming the argument, and write nothing.
 #include "dem/specimen/Packing.h"
+#include "tests/common/CommandRun.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -19,27 +19,10 @@ using namespace geocomp::dem;
 
 namespace {
 
-struct Outcome
-{
-  int code = -1;
-  std::string err;
-};
-
 /// Runs geocomp-bench-packing with `args`; captures stderr.
-Outcome run_packing(const std::string& args)
+geocomp::test::CommandResult run_packing(const std::string& args)
 {
-  static int calls = 0;
-  const fs::path err = fs::temp_directory_path() / ("bench-packing-err-" + std::to_string(::getpid()) + "-" + std::to_string(++calls));
-  const std::string cmd = std::string("'") + GEOCOMP_BENCH_PACKING + "' " + args + " >/dev/null 2>'" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  Outcome r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
-  fs::remove(err);
-  return r;
+  return geocomp::test::run_command(std::string("'") + GEOCOMP_BENCH_PACKING + "' " + args);
 }
 
 fs::path scratch(const std::string& name)
@@ -104,7 +87,7 @@ TEST(BenchPacking, BadArgumentsExitTwoNamingTheArgumentAndWriteNothing)
                {"500 0.636 5 '" + out.string() + "' 0", "THREADS:"},
                {"500 0.636", "expected 4 or 5 arguments"}};
   for (const auto& c : cases) {
-    const Outcome r = run_packing(c.args);
+    const geocomp::test::CommandResult r = run_packing(c.args);
     EXPECT_EQ(r.code, 2) << c.args;
     EXPECT_NE(r.err.find(c.names), std::string::npos) << c.args << ": " << r.err;
     EXPECT_FALSE(fs::exists(out)) << c.args;

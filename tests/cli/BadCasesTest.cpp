@@ -1,5 +1,7 @@
 // Every malformed case file in tests/bad_cases/ is refused by every command that reads a
 // case: one message naming the file and the parameter, exit code 2, and nothing written.
+#include "tests/common/CommandRun.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace fs = std::filesystem;
 
@@ -17,29 +18,12 @@ namespace {
 fs::path source_dir() { return fs::path(std::getenv("GEOCOMP_SOURCE_DIR") ? std::getenv("GEOCOMP_SOURCE_DIR") : "."); }
 fs::path geocomp_exe() { return fs::path(GEOCOMP_EXE); }
 
-struct Result {
-  int code = -1;
-  std::string err;
-};
+using Result = geocomp::test::CommandResult;
 
 /// Runs geocomp in `cwd` with the arguments; captures stderr.
 Result run(const fs::path &cwd, const std::string &args)
 {
-  // Per process and call: ctest runs several of these tests at once, often in the same cwd.
-  static int calls = 0;
-  const fs::path err_file =
-    fs::temp_directory_path() / ("geocomp-stderr-" + std::to_string(::getpid()) + "-" + std::to_string(++calls));
-  const std::string cmd = "cd '" + cwd.string() + "' && '" + geocomp_exe().string() + "' " + args + " >/dev/null 2>'" +
-                          err_file.string() + "'";
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err_file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
-  fs::remove(err_file);
-  return r;
+  return geocomp::test::run_command("cd '" + cwd.string() + "' && '" + geocomp_exe().string() + "' " + args);
 }
 
 /// Subcommands that take a case file, read from `geocomp --help`.
