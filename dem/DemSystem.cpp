@@ -3,6 +3,7 @@
 #include "common/BinaryState.h"
 #include "dem/ContactKinematics.h"
 #include "dem/LegacyState.h"
+#include "dem/LocalDamping.h"
 #include "dem/ParticleSweepKernel.h"
 #include "dem/TimeStep.h"
 
@@ -146,19 +147,6 @@ void turn_orientation(const KickDriftArgs& a, std::size_t p)
   Quat turned = q;
   rotate_orientation(turned, Eigen::Map<const Vec3>(a.omega + 3 * p), a.dt);
   q = turned;
-}
-
-/// Cundall local damping of one load vector: F_k - lambda |F_k| sign(v_k); returns the
-/// power dissipated, sum_k lambda |F_k| |v_k|.
-inline double local_damping(Vec3& f, const Vec3& v, double lambda)
-{
-  double power = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    const double s = (v[a] > 0.0) ? 1.0 : (v[a] < 0.0 ? -1.0 : 0.0);
-    power += lambda * std::abs(f[a]) * std::abs(v[a]);
-    f[a] -= lambda * std::abs(f[a]) * s;
-  }
-  return power;
 }
 
 /// A contact of a law with memory whose bodies left the interaction range: springs
@@ -488,13 +476,18 @@ double DemSystem::kick_drift(double dt)
   }
   const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) GEOCOMP_SWEEP_BODY {
     loss += kick_particle(p, dt);
-    const Vec3 x = store_.x[p] + dt * store_.v[p];
-    store_.x[p] = x;
-    rotate_orientation(store_.orientation[p], store_.omega[p], dt);
-    max_d2 = std::max(max_d2, (x - x_ref[p]).squaredNorm());
+    max_d2 = std::max(max_d2, drift_particle(p, dt, x_ref));
   });
   losses_.dissipated_local += loss;
   return max_d2;
+}
+
+GEOCOMP_CONTACT_KERNEL double DemSystem::drift_particle(std::size_t p, double dt, const std::vector<Vec3>& x_ref)
+{
+  const Vec3 x = store_.x[p] + dt * store_.v[p];
+  store_.x[p] = x;
+  rotate_orientation(store_.orientation[p], store_.omega[p], dt);
+  return (x - x_ref[p]).squaredNorm();
 }
 
 double DemSystem::drift_overdamped(double dt)
@@ -508,10 +501,7 @@ double DemSystem::drift_overdamped(double dt)
       store_.omega[p] = (mobility * store_.inv_inertia[p]) * store_.torque[p];
       loss += dt * (store_.force[p].dot(store_.v[p]) + store_.torque[p].dot(store_.omega[p]));
     }
-    const Vec3 x = store_.x[p] + dt * store_.v[p];
-    store_.x[p] = x;
-    rotate_orientation(store_.orientation[p], store_.omega[p], dt);
-    max_d2 = std::max(max_d2, (x - x_ref[p]).squaredNorm());
+    max_d2 = std::max(max_d2, drift_particle(p, dt, x_ref));
   });
   losses_.dissipated_local += loss;
   return max_d2;

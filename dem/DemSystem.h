@@ -300,11 +300,16 @@ private:
   double kick(double dt);
   double kick_drift(double dt);
   double drift_overdamped(double dt);
+  /// The drift of particle p over dt with its current velocities (position, orientation);
+  /// returns its squared displacement since the last neighbour build.
+  double drift_particle(std::size_t p, double dt, const std::vector<Vec3>& x_ref);
   void refresh_index();
   bool law_has_memory() const;
   double law_reach() const;
   double kick_drift_clumps(double dt);
   void kick_clumps(double dt);
+  /// Half a kick of clump c with its current load; adds its local damping loss to `loss`.
+  void kick_clump(std::size_t c, double dt, double& loss);
   void place_members(std::size_t c, bool positions);
   void gather_clump_loads();
 

@@ -1,25 +1,12 @@
 // DemSystem: clumps (rigid clusters of member spheres), see ClumpSet.h for the scheme.
 #include "dem/DemSystem.h"
+#include "dem/LocalDamping.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace geocomp::dem {
-
-namespace {
-/// Cundall local damping of one load vector (as for spheres); returns the power.
-double damp_locally(Vec3& f, const Vec3& v, double lambda)
-{
-  double power = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    const double s = (v[a] > 0.0) ? 1.0 : (v[a] < 0.0 ? -1.0 : 0.0);
-    power += lambda * std::abs(f[a]) * std::abs(v[a]);
-    f[a] -= lambda * std::abs(f[a]) * s;
-  }
-  return power;
-}
-}  // namespace
 
 std::size_t DemSystem::add_clump(const std::vector<ClumpMember>& members, double density, const Vec3& v,
                                  const Vec3& omega, double voxel)
@@ -101,17 +88,22 @@ void DemSystem::gather_clump_loads()
   }
 }
 
+void DemSystem::kick_clump(std::size_t c, double dt, double& loss)
+{
+  Vec3 f = clumps_.force[c], t = clumps_.torque[c];
+  if (local_damping_ > 0.0) {
+    loss += 0.5 * dt * local_damping(f, clumps_.v[c], local_damping_);
+    loss += 0.5 * dt * local_damping(t, clumps_.angular_velocity(c), local_damping_);
+  }
+  clumps_.kick(c, 0.5 * dt, f, t);
+}
+
 double DemSystem::kick_drift_clumps(double dt)
 {
   const std::vector<Vec3>& x_ref = search_.reference_positions();
   double max_d2 = 0.0, loss = 0.0;
   for (std::size_t c = 0; c < clumps_.size(); ++c) {
-    Vec3 f = clumps_.force[c], t = clumps_.torque[c];
-    if (local_damping_ > 0.0) {
-      loss += 0.5 * dt * damp_locally(f, clumps_.v[c], local_damping_);
-      loss += 0.5 * dt * damp_locally(t, clumps_.angular_velocity(c), local_damping_);
-    }
-    clumps_.kick(c, 0.5 * dt, f, t);
+    kick_clump(c, dt, loss);
     clumps_.drift(c, dt);
     place_members(c, true);
     if (x_ref.size() == store_.size())
@@ -128,12 +120,7 @@ void DemSystem::kick_clumps(double dt)
 {
   double loss = 0.0;
   for (std::size_t c = 0; c < clumps_.size(); ++c) {
-    Vec3 f = clumps_.force[c], t = clumps_.torque[c];
-    if (local_damping_ > 0.0) {
-      loss += 0.5 * dt * damp_locally(f, clumps_.v[c], local_damping_);
-      loss += 0.5 * dt * damp_locally(t, clumps_.angular_velocity(c), local_damping_);
-    }
-    clumps_.kick(c, 0.5 * dt, f, t);
+    kick_clump(c, dt, loss);
     place_members(c, false);
   }
   losses_.dissipated_local += loss;
