@@ -470,6 +470,12 @@ double DemSystem::kick_drift(double dt)
     args.x_ref = x_ref.front().data();
     args.dt = dt;
     args.turn_scalar = turn_orientation;
+    args.owner = this;
+    args.kick_drift_scalar = [](const KickDriftArgs& a, std::size_t p) {
+      DemSystem& self = *static_cast<DemSystem*>(a.owner);
+      self.kick_particle(p, a.dt);  // no local damping on this path (batched_sweeps())
+      return self.drift_particle(p, a.dt, self.search_.reference_positions());
+    };
     return sweep_blocks([&](std::size_t begin, std::size_t end, double&, double& max_d2) GEOCOMP_SWEEP_BODY {
              max_d2 = std::max(max_d2, kick_drift_batched(args, begin, end));
            }).second;

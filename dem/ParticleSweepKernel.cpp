@@ -145,19 +145,9 @@ double kick_drift_batched(const KickDriftArgs& a, std::size_t begin, std::size_t
   _mm256_store_pd(lanes, max_d2);
   double m = 0.0;
   for (double l : lanes) m = m < l ? l : m;
-  for (; p < end; ++p) {  // the last spheres of the range, one at a time (kick_particle and the drift)
-    const std::size_t k3 = 3 * p;
-    const double sv = 0.5 * a.dt * a.inv_mass[p], sw = 0.5 * a.dt * a.inv_inertia[p];
-    double d2 = 0.0;
-    for (int r = 0; r < 3; ++r) {
-      a.v[k3 + r] = a.v[k3 + r] + sv * a.force[k3 + r];
-      a.omega[k3 + r] = a.omega[k3 + r] + sw * a.torque[k3 + r];
-      a.x[k3 + r] = a.x[k3 + r] + a.dt * a.v[k3 + r];
-    }
-    const double ex = a.x[k3] - a.x_ref[k3], ey = a.x[k3 + 1] - a.x_ref[k3 + 1], ez = a.x[k3 + 2] - a.x_ref[k3 + 2];
-    d2 = ex * ex + ey * ey + ez * ez;
+  for (; p < end; ++p) {  // the last spheres of the range, one at a time
+    const double d2 = a.kick_drift_scalar(a, p);
     m = m < d2 ? d2 : m;
-    a.turn_scalar(a, p);
   }
   return m;
 }

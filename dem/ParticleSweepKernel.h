@@ -43,6 +43,11 @@ struct KickDriftArgs
   double dt = 0.0;
   /// The scalar rotation of particle p's orientation by its (already kicked) spin.
   void (*turn_scalar)(const KickDriftArgs& args, std::size_t p) = nullptr;
+  /// The scalar sweep of particle p (kick, drift, turn) for the last spheres of a range
+  /// that do not fill a vector; returns p's squared displacement since the last build.
+  /// `owner` is passed through for it.
+  double (*kick_drift_scalar)(const KickDriftArgs& args, std::size_t p) = nullptr;
+  void* owner = nullptr;
 };
 
 /// The closing half kick of pass B (DemSystem::compute_forces_with) for bodies without
