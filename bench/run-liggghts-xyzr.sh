@@ -10,7 +10,8 @@
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 deck=$here/../../shared/bench/liggghts_bench.in
-packing=${1:?usage: bench/run-liggghts-xyzr.sh PACKING.xyzr}
+[ $# -eq 1 ] || { echo "usage: bench/run-liggghts-xyzr.sh PACKING.xyzr (one packing file)" >&2; exit 2; }
+packing=$1
 [ -r "$packing" ] || { echo "run-liggghts-xyzr: cannot read packing file '$packing'" >&2; exit 2; }
 [ -r "$deck" ] || { echo "run-liggghts-xyzr: the shared LIGGGHTS deck '$deck' is missing" >&2; exit 2; }
 L=$(head -1 "$packing" | sed -n -e 's/^# x y z r *box \[0,\([0-9.eE+-]*\)\]x\[0,\1\]x\[0,\1\]$/\1/p' \
