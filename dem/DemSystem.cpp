@@ -662,6 +662,18 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       wall_batch.wall_mu = a + 9 * nw;
     }
   }
+  // The batched pair kernel reads the bodies packed by fours (PairBatchKernel.h), written
+  // with the rows' weights below.
+  [[maybe_unused]] PackedBody* packed_xr = nullptr;
+  [[maybe_unused]] PackedBody* packed_vm = nullptr;
+  if (batched) {
+    packed_position_radius_.resize(n);
+    packed_velocity_inv_mass_.resize(n);
+    packed_xr = packed_position_radius_.data();
+    packed_vm = packed_velocity_inv_mass_.data();
+    batch.position_radius = packed_xr;
+    batch.velocity_inv_mass = packed_vm;
+  }
   // Loads are added into the bodies' rows as the slots are computed (LoadScatter.h).
   const int workers = threads_;
   scatter_.plan(lists_, n, kBlock, workers, search_.n_builds());
@@ -686,6 +698,10 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
     for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
       const Vec3 weight = store_.mass[p] * g;
       rows[p] = LoadRow{{weight.x(), weight.y(), weight.z(), 0.0}, {0.0, 0.0, 0.0, 0.0}};
+      if (packed_xr) {
+        packed_xr[p] = PackedBody{{x[p].x(), x[p].y(), x[p].z(), R[p]}};
+        packed_vm[p] = PackedBody{{v[p].x(), v[p].y(), v[p].z(), im[p]}};
+      }
     }
     // Pass A: particle pairs, worker w's contiguous blocks (LoadScatter::blocks_of).
 #ifdef _OPENMP
@@ -1354,6 +1370,7 @@ std::size_t DemSystem::memory_bytes() const
          search_.memory_bytes() + block_losses_.capacity() * sizeof(double) +
          (walls_.capacity() * sizeof(PlaneWall)) + wall_force_old_.capacity() * sizeof(Vec3) +
          wall_terms_.capacity() * sizeof(WallTerm) + scatter_.memory_bytes() +
+         (packed_position_radius_.capacity() + packed_velocity_inv_mass_.capacity()) * sizeof(PackedBody) +
          clumps_.memory_bytes();
 }
 

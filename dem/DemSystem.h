@@ -355,6 +355,8 @@ private:
     bool recorded = false, touching = false;
   };
   std::vector<WallTerm> wall_terms_;  // one per wall slot
+  std::vector<PackedBody> packed_position_radius_;    // the batched pair kernel's copies,
+  std::vector<PackedBody> packed_velocity_inv_mass_;  // packed before each pass A
   std::vector<double> wall_arrays_;   // the walls as the batched kernel reads them
   std::vector<Vec3> wall_force_old_;
 };

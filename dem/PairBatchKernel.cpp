@@ -69,6 +69,16 @@ inline Pack gather1(const double* a, const std::uint32_t idx[kLanes])
 {
   return Pack{a[idx[0]], a[idx[1]], a[idx[2]], a[idx[3]]};
 }
+/// Four packed bodies (PackedBody: 4 doubles, 32-byte aligned) as four packs: one aligned
+/// 256-bit load per body and a 4x4 transpose; the fourth quantity comes with the vector.
+inline void gather4(const PackedBody* a, const std::uint32_t idx[kLanes], P3& xyz, Pack& w)
+{
+  __m256d r0 = _mm256_load_pd(a[idx[0]].q), r1 = _mm256_load_pd(a[idx[1]].q);
+  __m256d r2 = _mm256_load_pd(a[idx[2]].q), r3 = _mm256_load_pd(a[idx[3]].q);
+  avx2::transpose4(r0, r1, r2, r3);
+  xyz = P3{Pack(r0), Pack(r1), Pack(r2)};
+  w = Pack(r3);
+}
 
 using avx2::transpose4;  // Avx2Transpose.h
 
@@ -94,9 +104,10 @@ struct Batch
   std::size_t index[kLanes];  ///< the slots' indices (their loads' places)
   std::uint32_t ii[kLanes], jj[kLanes];
   int lanes;
-  // Stage 1: the kinematics (1a: the geometry; 1b: the velocities), the Coulomb coefficient.
+  // Stage 1: the kinematics (1a: the geometry; 1b: the velocities and the effective mass
+  // and radius, with the inverse masses packed with the velocities), the Coulomb coefficient.
   P3 n, v_t;
-  Pack delta, v_n, m_eff, r_eff, spin, arm_i, arm_j, mu;
+  Pack radius_i, radius_j, delta, v_n, m_eff, r_eff, spin, arm_i, arm_j, mu;
   // Stage 2: the normal law and the spring turned into the tangent plane.
   Pack f_n, elastic, c_t, inv_k_t, k_t;
   P3 xi;
@@ -261,10 +272,11 @@ void test_batch(const PairBatchArgs& a, std::size_t c0, int lanes, TouchingRing&
   TestedBatch t;
   read_indices(a, c0, lanes, t);
   // d = x_j - x_i, r2, R_i + R_j; apart when r2 >= range^2 or r2 == 0.
-  t.d = gather3(a.x, t.j) - gather3(a.x, t.i);
+  P3 xi, xj;
+  gather4(a.position_radius, t.i, xi, t.ri);
+  gather4(a.position_radius, t.j, xj, t.rj);
+  t.d = xj - xi;
   t.r2 = dot(t.d, t.d);
-  t.ri = gather1(a.radius, t.i);
-  t.rj = gather1(a.radius, t.j);
   const Pack rs = t.ri + t.rj;
   t.touching = (t.r2 < rs * rs) & (t.r2 != 0.0);
   keep_touching(a, t, ring);
@@ -316,24 +328,34 @@ void run_group(KernelState& st, TouchingRing& ring, std::size_t at, int count)
     const Pack Ri = Pack(_mm256_load_pd(ring.ri + e)), Rj = Pack(_mm256_load_pd(ring.rj + e));
     const Pack rs = Ri + Rj;
     const Pack r = sqrt4(r2);
-    const Pack inv_m = gather1(a.inv_mass, B.ii) + gather1(a.inv_mass, B.jj);
-    const Pack w_eff = one / (inv_m * rs);
+    B.radius_i = Ri;
+    B.radius_j = Rj;
     B.n = d * (one / r);
     B.delta = rs - r;
-    B.m_eff = w_eff * rs;
-    B.r_eff = Ri * Rj * inv_m * w_eff;
     // The lever arms R - delta/2, which are also the torque arms of the loads
     // (LoadScatter::add_pair).
     B.arm_i = Ri - 0.5 * B.delta;
     B.arm_j = Rj - 0.5 * B.delta;
     B.mu = mu;
   }
-  // Stage 1b: sphere_sphere_kinematics, the velocities.
+  // Stage 1b: sphere_sphere_kinematics, the velocities, then m* and R* (the inverse masses
+  // come packed with the velocities).
   for (int b = 0; b < n_batches; ++b) {
     Batch& B = chunk[b];
     const Pack li = B.arm_i, lj = B.arm_j;
     const P3 wi = gather3(a.omega, B.ii), wj = gather3(a.omega, B.jj);
-    const P3 v_rel = (gather3(a.v, B.jj) - gather3(a.v, B.ii)) - cross(li * wi + lj * wj, B.n);
+    P3 vi, vj;
+    Pack inv_mi, inv_mj;
+    gather4(a.velocity_inv_mass, B.ii, vi, inv_mi);
+    gather4(a.velocity_inv_mass, B.jj, vj, inv_mj);
+    // m* = 1/(1/m_i + 1/m_j) and R* = R_i R_j/(R_i + R_j) through one division, in
+    // sphere_sphere_kinematics' order.
+    const Pack inv_m = inv_mi + inv_mj;
+    const Pack rs = B.radius_i + B.radius_j;
+    const Pack w_eff = one / (inv_m * rs);
+    B.m_eff = w_eff * rs;
+    B.r_eff = B.radius_i * B.radius_j * inv_m * w_eff;
+    const P3 v_rel = (vj - vi) - cross(li * wi + lj * wj, B.n);
     B.v_n = dot(v_rel, B.n);
     B.v_t = v_rel - B.v_n * B.n;
     B.spin = 0.5 * dot(wi + wj, B.n);
@@ -590,8 +612,8 @@ inline void prefetch_ahead(const PairBatchArgs& a, std::size_t c, std::size_t en
       std::uint32_t j;
       std::memcpy(&j, a.slots + (c + kPrefetchBodies + l) * size + a.layout.j, sizeof j);
       const std::size_t k = 3 * std::size_t(j);
-      prefetch_line(a.x + k);
-      prefetch_line(a.v + k);
+      prefetch_line(a.position_radius + j);
+      prefetch_line(a.velocity_inv_mass + j);
       prefetch_line(a.omega + k);
       if (a.rows) prefetch_line(a.rows + 8 * std::size_t(j));
     }

@@ -31,6 +31,13 @@
 // caller passes raw arrays (Vec3 arrays are three contiguous doubles per particle) and
 // the slot layout below, which DemSystem.cpp checks against PairSlot with static_asserts.
 //
+// Bodies: a slot's two bodies are read by index, four lanes at a time. The caller packs
+// each body's position with its radius and its velocity with its inverse mass into 32-byte
+// records (PackedBody) before the pass, so one aligned load per body and lane, and one 4x4
+// transpose for four lanes, bring both the vector and the scalar the kernel needs with it
+// (from the separate arrays that took a masked load of the vector, which crosses a cache
+// line for one body in four, and a scalar gather). The spins stay in their array.
+//
 // Loads: with `rows`, each slot's force and torques are then added into its two bodies'
 // rows in slot order, exactly as LoadScatter::add_pair does (the same bits as the gather).
 //
@@ -76,6 +83,12 @@ struct LinearLawConstants
   double c_t = 0.0;
 };
 
+/// Four doubles of one body, 32-byte aligned (a 3-vector and a scalar).
+struct alignas(32) PackedBody
+{
+  double q[4];
+};
+
 /// Particle arrays (storage order) and the slots of one call.
 struct PairBatchArgs
 {
@@ -84,6 +97,11 @@ struct PairBatchArgs
   const double* omega = nullptr;
   const double* radius = nullptr; ///< 1 per particle
   const double* inv_mass = nullptr;
+  /// The pair kernel's copies of the bodies (DemSystem packs them before pass A): x, y, z, R
+  /// and v_x, v_y, v_z, 1/m, so that one aligned load per body brings a vector and the
+  /// scalar the kernel needs with it (the arrays above serve the wall kernel).
+  const PackedBody* position_radius = nullptr;
+  const PackedBody* velocity_inv_mass = nullptr;
   unsigned char* slots = nullptr; ///< the PairSlot array
   PairSlotLayout layout;
   /// The slots' loads (SlotLoad, ContactLists.h: force then lever, 6 doubles a slot),
