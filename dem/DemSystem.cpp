@@ -664,8 +664,8 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
   }
   // The batched pair kernel reads the bodies packed by fours (PairBatchKernel.h), written
   // with the rows' weights below.
-  [[maybe_unused]] PackedBody* packed_xr = nullptr;
-  [[maybe_unused]] PackedBody* packed_vm = nullptr;
+  PackedBody* packed_xr = nullptr;  // x, y, z, R
+  PackedBody* packed_vm = nullptr;  // v_x, v_y, v_z, 1/m
   if (batched) {
     packed_position_radius_.resize(n);
     packed_velocity_inv_mass_.resize(n);
