@@ -99,7 +99,8 @@ struct PairBatchArgs
   const double* inv_mass = nullptr;
   /// The pair kernel's copies of the bodies (DemSystem packs them before pass A): x, y, z, R
   /// and v_x, v_y, v_z, 1/m, so that one aligned load per body brings a vector and the
-  /// scalar the kernel needs with it (the arrays above serve the wall kernel).
+  /// scalar the kernel needs with it (x, v, radius and inv_mass above serve the wall
+  /// kernel; omega both).
   const PackedBody* position_radius = nullptr;
   const PackedBody* velocity_inv_mass = nullptr;
   unsigned char* slots = nullptr; ///< the PairSlot array
