@@ -51,11 +51,7 @@ PairBatchArgs pair_batch_args(const LinearSpringDashpot& law, const ParticleStor
                               double mu, double dt_h, bool track)
 {
   PairBatchArgs a;
-  a.x = store.x.front().data();
-  a.v = store.v.front().data();
   a.omega = store.omega.front().data();
-  a.radius = store.radius.data();
-  a.inv_mass = store.inv_mass.data();
   a.slots = reinterpret_cast<unsigned char*>(lists.pairs.data());
   const PairSlot probe;
   const auto at = [&](const void* member) {
@@ -662,17 +658,19 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       wall_batch.wall_mu = a + 9 * nw;
     }
   }
-  // The batched pair kernel reads the bodies packed by fours (PairBatchKernel.h), written
-  // with the rows' weights below.
+  // The batched kernels read the bodies packed by fours (PairBatchKernel.h), written with
+  // the rows' weights below.
   PackedBody* packed_xr = nullptr;  // x, y, z, R
   PackedBody* packed_vm = nullptr;  // v_x, v_y, v_z, 1/m
-  if (batched) {
+  if (batched || wall_batch.wall_point) {
     packed_position_radius_.resize(n);
     packed_velocity_inv_mass_.resize(n);
     packed_xr = packed_position_radius_.data();
     packed_vm = packed_velocity_inv_mass_.data();
-    batch.position_radius = packed_xr;
-    batch.velocity_inv_mass = packed_vm;
+    for (PairBatchArgs* args : {&batch, &wall_batch}) {
+      args->position_radius = packed_xr;
+      args->velocity_inv_mass = packed_vm;
+    }
   }
   // Loads are added into the bodies' rows as the slots are computed (LoadScatter.h).
   const int workers = threads_;
@@ -717,13 +715,14 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
       wbatch.shared = LoadScatter::kShared;
       wbatch.junk_row = scatter_.junk_row(wk);
       // The scalar path's loads of slot c (the kernel adds its own), kept beside the slot
-      // when recording or when a body is shared (pass B1 gathers those).
-      const auto scatter_pair = [&](std::size_t c, const SlotLoad& load) {
+      // when recording, when a body is shared (pass B1 gathers those) or when `keep` (the
+      // zeros of a slot that came apart).
+      const auto scatter_pair = [&](std::size_t c, const SlotLoad& load, bool keep) {
         const PairSlot& s = pairs[c];
         const std::uint32_t ri = scatter_.row_of(s.i, wk), rj = scatter_.row_of(s.j, wk);
         scatter_.add_pair(ri, rj, load, s.overlap, R[s.i], R[s.j]);
         if constexpr (Law::has_rolling) scatter_.add_rolling(ri, rj, pmem[c].rolling);
-        if (record || scatter_.shared(s.i) || scatter_.shared(s.j)) loads[c] = load;
+        if (keep || record || scatter_.shared(s.i) || scatter_.shared(s.j)) loads[c] = load;
       };
       for (std::int64_t b = std::int64_t(b_first); b < std::int64_t(b_last); ++b) {
         BlockLosses lost;
@@ -745,13 +744,13 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
           if constexpr (Law::has_cohesion) range += law.reach(R[i] * R[j] / rs);
           if (r2 >= range * range || r2 == 0.0) {
             // Apart: the slot and its load hold zeros (written only when it did not already).
-            if (s.overlap != 0.0 || s.shear.squaredNorm() != 0.0) {
+            const bool came_apart = s.overlap != 0.0 || s.shear.squaredNorm() != 0.0;
+            if (came_apart) {
               s.overlap = 0.0;
               s.shear.setZero();
-              loads[c] = SlotLoad{};
             }
             if constexpr (Law::has_memory) separate(pmem[c]);
-            scatter_pair(c, SlotLoad{});
+            scatter_pair(c, SlotLoad{}, came_apart);
             continue;
           }
           ContactKinematics k;
@@ -766,7 +765,7 @@ double DemSystem::compute_forces_with(const Law& law, double dt_h, double kick_d
           } else {
             f = law.evaluate(k, s.shear);
           }
-          scatter_pair(c, store_contact(s, k, f));
+          scatter_pair(c, store_contact(s, k, f), false);
           if constexpr (Track) lost.add(f);
         }
         if constexpr (Track) lost.store(&block_losses_[3 * b]);

@@ -69,18 +69,19 @@ inline Pack gather1(const double* a, const std::uint32_t idx[kLanes])
 {
   return Pack{a[idx[0]], a[idx[1]], a[idx[2]], a[idx[3]]};
 }
+
+using avx2::transpose4;  // Avx2Transpose.h
+
 /// Four packed bodies (PackedBody: 4 doubles, 32-byte aligned) as four packs: one aligned
 /// 256-bit load per body and a 4x4 transpose; the fourth quantity comes with the vector.
 inline void gather4(const PackedBody* a, const std::uint32_t idx[kLanes], P3& xyz, Pack& w)
 {
   __m256d r0 = _mm256_load_pd(a[idx[0]].q), r1 = _mm256_load_pd(a[idx[1]].q);
   __m256d r2 = _mm256_load_pd(a[idx[2]].q), r3 = _mm256_load_pd(a[idx[3]].q);
-  avx2::transpose4(r0, r1, r2, r3);
+  transpose4(r0, r1, r2, r3);
   xyz = P3{Pack(r0), Pack(r1), Pack(r2)};
   w = Pack(r3);
 }
-
-using avx2::transpose4;  // Avx2Transpose.h
 
 inline double& slot_double(unsigned char* slot, std::size_t offset)
 {
@@ -542,9 +543,11 @@ void test_wall_batch(const PairBatchArgs& a, std::size_t c0, int lanes, Touching
 {
   TestedBatch t;
   read_indices(a, c0, lanes, t);
-  t.d = gather3(a.x, t.j) - gather3(a.wall_point, t.i);
+  P3 x;
+  gather4(a.position_radius, t.j, x, t.ri);        // x and R of the particle
+  t.rj = t.ri;
+  t.d = x - gather3(a.wall_point, t.i);
   t.r2 = dot(t.d, gather3(a.wall_normal, t.i));  // h
-  t.ri = t.rj = gather1(a.radius, t.j);           // R
   t.touching = ~(t.r2 >= t.ri);
   keep_touching(a, t, ring);
 }
@@ -567,10 +570,13 @@ void run_wall_group(KernelState& st, TouchingRing& ring, std::size_t at, int cou
     B.delta = R - h;
     const Pack l = R - 0.5 * B.delta;
     const P3 w = gather3(a.omega, B.jj);
-    const P3 v_rel = (gather3(a.v, B.jj) - gather3(a.wall_velocity, B.ii)) - l * cross(w, B.n);
+    P3 v;
+    Pack inv_m;
+    gather4(a.velocity_inv_mass, B.jj, v, inv_m);
+    const P3 v_rel = (v - gather3(a.wall_velocity, B.ii)) - l * cross(w, B.n);
     B.v_n = dot(v_rel, B.n);
     B.v_t = v_rel - B.v_n * B.n;
-    B.m_eff = one / gather1(a.inv_mass, B.jj);
+    B.m_eff = one / inv_m;
     B.r_eff = R;
     B.spin = 0.5 * dot(w, B.n);
     B.arm_i = l;

@@ -92,15 +92,10 @@ struct alignas(32) PackedBody
 /// Particle arrays (storage order) and the slots of one call.
 struct PairBatchArgs
 {
-  const double* x = nullptr;      ///< 3 per particle
-  const double* v = nullptr;
-  const double* omega = nullptr;
-  const double* radius = nullptr; ///< 1 per particle
-  const double* inv_mass = nullptr;
-  /// The pair kernel's copies of the bodies (DemSystem packs them before pass A): x, y, z, R
+  const double* omega = nullptr;  ///< the spins, 3 per particle
+  /// The bodies as the kernel reads them (DemSystem packs them before pass A): x, y, z, R
   /// and v_x, v_y, v_z, 1/m, so that one aligned load per body brings a vector and the
-  /// scalar the kernel needs with it (x, v, radius and inv_mass above serve the wall
-  /// kernel; omega both).
+  /// scalar the kernel needs with it.
   const PackedBody* position_radius = nullptr;
   const PackedBody* velocity_inv_mass = nullptr;
   unsigned char* slots = nullptr; ///< the PairSlot array
@@ -125,8 +120,9 @@ struct PairBatchArgs
   const std::uint32_t* row_of = nullptr;
   std::uint32_t shared = 0, junk_row = 0;
   /// Wall slots (evaluate_linear_walls_batched): the slots are WallSlots, whose layout is a
-  /// PairSlot's with i the wall and j the particle (their loads always recorded); the unbounded plane walls as arrays
-  /// (point, normal and velocity: 3 per wall; the Coulomb coefficient mu_p: 1 per wall).
+  /// PairSlot's with i the wall and j the particle (their loads always recorded); the
+  /// unbounded plane walls as arrays (point, normal and velocity: 3 per wall; the Coulomb
+  /// coefficient mu_p: 1 per wall).
   const double* wall_point = nullptr;
   const double* wall_normal = nullptr;
   const double* wall_velocity = nullptr;
