@@ -11,7 +11,7 @@
 #   defaults: 3 rounds on ../shared/bench/data/bench_10000.xyzr and bench_50000.xyzr
 #   BENCH=path/to/geocomp-dem-bench (default build/bench/geocomp-dem-bench); NEQ, NT as
 #   for the two runners (500 untimed + 2000 timed steps).
-set -eu
+set -eu -o pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 bench=${BENCH:-$here/../build/bench/geocomp-dem-bench}
 rounds=${1:-3}
@@ -25,18 +25,21 @@ done
 [ -x "$bench" ] || { echo "run-paired: no geocomp-dem-bench at '$bench' (build first: scripts/build.sh, or set BENCH)" >&2; exit 2; }
 export NEQ=${NEQ:-500} NT=${NT:-2000}
 
-ns() { grep -o 'ns/particle-step: [0-9.]*' | awk '{print $2}'; }
+ns() { grep -o 'ns/particle-step: [0-9.]*' | awk '{print $2}' || true; }
+need() { [ -n "$1" ] || { echo "run-paired: $2 printed no ns/particle-step line on '$p'" >&2; exit 1; }; }
 table=$(mktemp); trap 'rm -f "$table"' EXIT
 for p in "${packings[@]}"; do
   for r in $(seq "$rounds"); do
     peer=$("$here/run-liggghts-xyzr.sh" "$p")
     echo "$peer"
-    l1=$(echo "$peer" | grep 'processes=1' | ns); l2=$(echo "$peer" | grep 'processes=2' | ns)
+    l1=$(echo "$peer" | grep 'processes=1' | ns || true); l2=$(echo "$peer" | grep 'processes=2' | ns || true)
+    need "$l1" "LIGGGHTS (1 process)"; need "$l2" "LIGGGHTS (2 processes)"
     g=()
     for t in 1 2; do
       line=$(OMP_NUM_THREADS=$t "$bench" "$p" $t "$NEQ" "$NT" | tail -1)
       echo "$line"
       g+=("$(echo "$line" | ns)")
+      need "${g[-1]}" "geocomp-dem-bench (OMP_NUM_THREADS=$t)"
     done
     echo "$(basename "$p") $l1 ${g[0]} $l2 ${g[1]}" >> "$table"
   done
