@@ -136,14 +136,6 @@ inline void rotate_orientation(Quat& q, const Vec3& omega, double dt)
   q.z() = c * qz + ux * qy - uy * qx + uz * qw;
 }
 
-/// KickDriftArgs::turn_scalar: rotate_orientation of particle p from the sweep's arrays.
-void turn_orientation(const KickDriftArgs& a, std::size_t p)
-{
-  Eigen::Map<Quat> q(a.orientation + 4 * p);
-  Quat turned = q;
-  rotate_orientation(turned, Eigen::Map<const Vec3>(a.omega + 3 * p), a.dt);
-  q = turned;
-}
 
 /// A contact of a law with memory whose bodies left the interaction range: springs
 /// reset, an intact bond breaks (it is beyond its limit), adhesion ruptures.
@@ -451,7 +443,6 @@ double DemSystem::kick(double dt)
 
 double DemSystem::kick_drift(double dt)
 {
-  const std::vector<Vec3>& x_ref = search_.reference_positions();
   if (batched_sweeps() && store_.size() > 0) {
     // Four spheres at a time (ParticleSweepKernel.h, the same bits as the loop below).
     KickDriftArgs args;
@@ -463,14 +454,17 @@ double DemSystem::kick_drift(double dt)
     args.torque = store_.torque.front().data();
     args.inv_mass = store_.inv_mass.data();
     args.inv_inertia = store_.inv_inertia.data();
-    args.x_ref = x_ref.front().data();
+    args.x_ref = search_.reference_positions().front().data();
     args.dt = dt;
-    args.turn_scalar = turn_orientation;
     args.owner = this;
+    args.turn_scalar = [](const KickDriftArgs& a, std::size_t p) {
+      DemSystem& self = *static_cast<DemSystem*>(a.owner);
+      rotate_orientation(self.store_.orientation[p], self.store_.omega[p], a.dt);
+    };
     args.kick_drift_scalar = [](const KickDriftArgs& a, std::size_t p) {
       DemSystem& self = *static_cast<DemSystem*>(a.owner);
       self.kick_particle(p, a.dt);  // no local damping on this path (batched_sweeps())
-      return self.drift_particle(p, a.dt, self.search_.reference_positions());
+      return self.drift_particle(p, a.dt);
     };
     return sweep_blocks([&](std::size_t begin, std::size_t end, double&, double& max_d2) GEOCOMP_SWEEP_BODY {
              max_d2 = std::max(max_d2, kick_drift_batched(args, begin, end));
@@ -478,14 +472,15 @@ double DemSystem::kick_drift(double dt)
   }
   const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) GEOCOMP_SWEEP_BODY {
     loss += kick_particle(p, dt);
-    max_d2 = std::max(max_d2, drift_particle(p, dt, x_ref));
+    max_d2 = std::max(max_d2, drift_particle(p, dt));
   });
   losses_.dissipated_local += loss;
   return max_d2;
 }
 
-GEOCOMP_CONTACT_KERNEL double DemSystem::drift_particle(std::size_t p, double dt, const std::vector<Vec3>& x_ref)
+GEOCOMP_CONTACT_KERNEL double DemSystem::drift_particle(std::size_t p, double dt)
 {
+  const std::vector<Vec3>& x_ref = search_.reference_positions();
   const Vec3 x = store_.x[p] + dt * store_.v[p];
   store_.x[p] = x;
   rotate_orientation(store_.orientation[p], store_.omega[p], dt);
@@ -496,14 +491,13 @@ double DemSystem::drift_overdamped(double dt)
 {
   // S0 "Aristotelian" packing dynamics: v = F / gamma with gamma = m / (beta dt).
   const double mobility = overdamped_ * dt;
-  const std::vector<Vec3>& x_ref = search_.reference_positions();
   const auto [loss, max_d2] = sweep_particles([&](std::size_t p, double& loss, double& max_d2) GEOCOMP_SWEEP_BODY {
     if (store_.inv_mass[p] != 0.0) {  // kinematic particles keep their set velocity
       store_.v[p] = (mobility * store_.inv_mass[p]) * store_.force[p];
       store_.omega[p] = (mobility * store_.inv_inertia[p]) * store_.torque[p];
       loss += dt * (store_.force[p].dot(store_.v[p]) + store_.torque[p].dot(store_.omega[p]));
     }
-    max_d2 = std::max(max_d2, drift_particle(p, dt, x_ref));
+    max_d2 = std::max(max_d2, drift_particle(p, dt));
   });
   losses_.dissipated_local += loss;
   return max_d2;

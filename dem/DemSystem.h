@@ -302,7 +302,7 @@ private:
   double drift_overdamped(double dt);
   /// The drift of particle p over dt with its current velocities (position, orientation);
   /// returns its squared displacement since the last neighbour build.
-  double drift_particle(std::size_t p, double dt, const std::vector<Vec3>& x_ref);
+  double drift_particle(std::size_t p, double dt);
   void refresh_index();
   bool law_has_memory() const;
   double law_reach() const;

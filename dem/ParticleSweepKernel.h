@@ -41,11 +41,12 @@ struct KickDriftArgs
   const double* inv_inertia = nullptr;
   const double* x_ref = nullptr;   ///< positions at the last neighbour build, 3 per particle
   double dt = 0.0;
-  /// The scalar rotation of particle p's orientation by its (already kicked) spin.
+  /// The caller's scalar code, reached through `owner` (passed through to both):
+  /// the rotation of particle p's orientation by its (already kicked) spin, for a batch
+  /// whose angle leaves the series' range;
   void (*turn_scalar)(const KickDriftArgs& args, std::size_t p) = nullptr;
-  /// The scalar sweep of particle p (kick, drift, turn) for the last spheres of a range
-  /// that do not fill a vector; returns p's squared displacement since the last build.
-  /// `owner` is passed through for it.
+  /// the sweep of particle p (kick, drift, turn) for the last spheres of a range that do
+  /// not fill a vector; returns p's squared displacement since the last build.
   double (*kick_drift_scalar)(const KickDriftArgs& args, std::size_t p) = nullptr;
   void* owner = nullptr;
 };
