@@ -19,7 +19,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
+#include <new>
 #include <numeric>
 #include <random>
 #include <string>
