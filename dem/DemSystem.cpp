@@ -136,7 +136,6 @@ inline void rotate_orientation(Quat& q, const Vec3& omega, double dt)
   q.z() = c * qz + ux * qy - uy * qx + uz * qw;
 }
 
-
 /// A contact of a law with memory whose bodies left the interaction range: springs
 /// reset, an intact bond breaks (it is beyond its limit), adhesion ruptures.
 inline void separate(ContactMemory& m)
