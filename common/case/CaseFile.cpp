@@ -2,15 +2,16 @@
 // convert to plain structs, validate, and turn every failure into one CaseError that
 // names the file, the parameter and what was expected.
 #include "common/case/CaseParameters.h"
+#include "common/case/JsonCase.h"
 #include "common/case/ParseParameters.h"
 #include "common/case/Sections.h"
+#include "common/case/TextEncoding.h"
 
 #include <deal.II/base/exceptions.h>
 
-#include <boost/property_tree/json_parser.hpp>
+#include <nlohmann/json.hpp>
 
-#include <regex>
-#include <set>
+#include <cctype>
 #include <sstream>
 
 namespace geocomp {
@@ -41,47 +42,18 @@ void declare_all(ParameterHandler &prm, unsigned int stages)
   sections::declare_calibration(prm);
 }
 
-unsigned int count_stages(const std::string &text)
+/// The highest N of the `subsection stage N` entered in `program` (at most 1000).
+unsigned int count_stages(const ParameterText &text)
 {
-  const std::regex stage(R"(subsection\s+stage\s+([0-9]+))");
   unsigned int n = 0;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), stage); it != std::sregex_iterator(); ++it)
-    n = std::max(n, static_cast<unsigned int>(std::min(1000ul, std::stoul((*it)[1].str().substr(0, 6)))));
+  for (const std::string &entered : text.entered) {
+    if (entered.rfind("program/stage ", 0) != 0)
+      continue;
+    const std::string number = entered.substr(14, 4);
+    if (!number.empty() && std::all_of(number.begin(), number.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+      n = std::max(n, std::min(1000u, static_cast<unsigned int>(std::stoul(number))));
+  }
   return n;
-}
-
-void tree_to_prm(const boost::property_tree::ptree &tree, std::ostream &out, const std::string &path)
-{
-  for (const auto &[key, node] : tree) {
-    if (key.empty())
-      throw CaseError(path, "(file)", "JSON arrays are not case-file syntax: expected objects and values");
-    if (key.find_first_of("\n#") != std::string::npos)
-      throw CaseError(path, "(file)", "a JSON key contains a newline or '#'");
-    if (node.empty()) {
-      const std::string v = node.data();
-      if (v.find('\n') != std::string::npos)
-        throw CaseError(path, key, "a value must be on one line");
-      out << "set " << key << " = " << v << "\n";
-    } else {
-      out << "subsection " << key << "\n";
-      tree_to_prm(node, out, path);
-      out << "end\n";
-    }
-  }
-}
-
-std::string json_to_prm(const std::string &text, const std::string &path)
-{
-  boost::property_tree::ptree tree;
-  try {
-    std::istringstream in(text);
-    boost::property_tree::read_json(in, tree);
-  } catch (const boost::property_tree::json_parser_error &e) {
-    throw CaseError(path, "(file)", "not valid JSON at line " + std::to_string(e.line()) + ": " + e.message());
-  }
-  std::ostringstream out;
-  tree_to_prm(tree, out, path);
-  return out.str();
 }
 } // namespace
 
@@ -99,14 +71,11 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
   const bool prm_file = path.size() >= 4 && path.substr(path.size() - 4) == ".prm";
   if (!json && !prm_file)
     throw CaseError(path, "(file)", "expected a case file ending in .prm or .json");
-  if (c.text.find('\0') != std::string::npos)
-    throw CaseError(path, "(file)", "contains a NUL byte: expected a text case file");
+  check_utf8_text(c.text, path);
 
-  // JSON is read as a tree and handed to ParameterHandler as the equivalent .prm, so
-  // both syntaxes get the same line-based messages naming the parameter.
-  std::string prm_text = c.text;
-  if (json)
-    prm_text = json_to_prm(c.text, path);
+  // JSON is handed to ParameterHandler as the equivalent .prm, so both syntaxes get the
+  // same line-based messages naming the parameter; a .prm has its includes expanded.
+  const ParameterText prm_text = expand_parameter_text(json ? json_to_prm(c.text, path) : c.text, path);
 
   const unsigned int stages = count_stages(prm_text);
   if (stages > 200)
@@ -144,18 +113,18 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
 namespace {
 /// Walks deal.II's JSON description of the declared parameters and writes a .prm with,
 /// for each entry, its help, the values it accepts and its default.
-void print_tree(const boost::property_tree::ptree &tree, std::ostream &out, int depth)
+void print_tree(const nlohmann::ordered_json &tree, std::ostream &out, int depth)
 {
   const std::string indent(2 * depth, ' ');
-  for (const auto &[key, node] : tree) {
-    if (node.get_child_optional("default_value")) {
-      out << indent << "# " << node.get<std::string>("documentation", "") << "\n"
-          << indent << "# allowed: " << node.get<std::string>("pattern_description", "") << "\n"
-          << indent << "set " << key << " = " << node.get<std::string>("default_value", "") << "\n\n";
+  for (const auto &[key, node] : tree.items()) {
+    if (node.is_object() && node.contains("default_value")) {
+      out << indent << "# " << node.value("documentation", "") << "\n"
+          << indent << "# allowed: " << node.value("pattern_description", "") << "\n"
+          << indent << "set " << key << " = " << node.value("default_value", "") << "\n\n";
     }
   }
-  for (const auto &[key, node] : tree) {
-    if (!node.get_child_optional("default_value") && !node.empty()) {
+  for (const auto &[key, node] : tree.items()) {
+    if (node.is_object() && !node.contains("default_value") && !node.empty()) {
       out << indent << "subsection " << key << "\n";
       print_tree(node, out, depth + 1);
       out << indent << "end\n\n";
@@ -171,9 +140,7 @@ std::string describe_parameters()
   std::ostringstream json;
   prm.print_parameters(json, ParameterHandler::OutputStyle(ParameterHandler::OutputStyle::JSON |
                                                            ParameterHandler::OutputStyle::KeepDeclarationOrder));
-  boost::property_tree::ptree tree;
-  std::istringstream in(json.str());
-  boost::property_tree::read_json(in, tree);
+  const auto tree = nlohmann::ordered_json::parse(json.str());
   std::ostringstream out;
   out << "# geocomp case file parameters: every entry with its help, allowed values and default.\n"
       << "# SI units. Program stresses and rates are tension positive; 'pressure' entries are\n"

@@ -1,18 +1,38 @@
 // See ParseParameters.h: parameter files read, deal.II's parse errors turned into CaseErrors.
 #include "common/case/ParseParameters.h"
 
+#include "common/case/InputFile.h"
+#include "common/case/InputLimits.h"
+#include "common/case/TextEncoding.h"
+
 #include <cctype>
-#include <fstream>
-#include <regex>
 #include <sstream>
-#include <vector>
 
 namespace geocomp {
 
 namespace {
 
-/// deal.II's exception text carries file/line of the library; keep the part for users.
-std::string user_message(const std::string &what, const std::string &path)
+std::string trimmed(const std::string &s)
+{
+  const auto b = s.find_first_not_of(" \t\r");
+  return b == std::string::npos ? "" : s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+/// The number in deal.II's "Line <N> of file <...>", or 0.
+unsigned int line_in(const std::string &what)
+{
+  const auto at = what.find("Line <");
+  if (at == std::string::npos)
+    return 0;
+  unsigned long n = 0;
+  for (std::size_t k = at + 6; k < what.size() && k < at + 16 && std::isdigit(static_cast<unsigned char>(what[k])); ++k)
+    n = 10 * n + static_cast<unsigned long>(what[k] - '0');
+  return static_cast<unsigned int>(n);
+}
+
+/// deal.II's exception text carries file/line of the library and a stack trace; keep the
+/// part for users, on one line, with the line of the file the user wrote.
+std::string user_message(const std::string &what, const ParameterText &text, const std::string &path)
 {
   std::string s = what;
   const auto info = s.find("Additional information:");
@@ -35,86 +55,84 @@ std::string user_message(const std::string &what, const std::string &path)
   }
   while (!out.empty() && (out.back() == '-' || out.back() == ' '))
     out.pop_back();
-  // The file is named once, by CaseError; keep only the line number.
-  for (const std::string &file : {" of file <" + path + ">: ", " of file <" + path + ": "}) {
-    const auto at = out.find(file);
-    if (at != std::string::npos)
-      out.replace(at, file.size(), ": ");
+  // "Line <N> of file <path>: " -> "line N: " (or "line M of 'included': "): the file is
+  // named once, by CaseError.
+  const unsigned int line = line_in(out);
+  if (line > 0) {
+    const std::string from = "Line <" + std::to_string(line) + ">";
+    const auto at = out.find(from);
+    auto end = out.find(": ", at);
+    for (const std::string &file : {" of file <" + path + ">: ", " of file <" + path + ": "})
+      if (out.compare(at + from.size(), file.size(), file) == 0)
+        end = at + from.size() + file.size() - 2;
+    if (end != std::string::npos)
+      out.replace(at, end - at, text.where(line));
   }
-  static const std::regex where(R"(Line <([0-9]+)>: )");
-  return std::regex_replace(out, where, "line $1: ");
-}
-
-/// "section/subsection/" enclosing a 1-based line of a .prm text.
-std::string section_path_at(const std::string &text, int line)
-{
-  std::vector<std::string> stack;
-  std::istringstream in(text);
-  std::string l;
-  static const std::regex sub(R"(^\s*subsection\s+(.*?)\s*$)"), end(R"(^\s*end\s*$)");
-  for (int n = 1; n < line && std::getline(in, l); ++n) {
-    const auto hash = l.find('#');
-    if (hash != std::string::npos)
-      l = l.substr(0, hash);
-    std::smatch m;
-    if (std::regex_match(l, m, sub))
-      stack.push_back(m[1]);
-    else if (std::regex_match(l, end) && !stack.empty())
-      stack.pop_back();
-  }
-  std::string out;
-  for (const auto &s : stack)
-    out += s + "/";
   return out;
 }
 
-/// The parameter a ParameterHandler message is about, with its section path when the
-/// message gives a line; "(file)" when it names none.
-std::string parameter_in(const std::string &message, const std::string &text)
+/// The text between `open` and the next '>' after it, or "" (no regular expression: the
+/// message quotes the user's value, up to input_limits::max_line_bytes of it).
+std::string quoted_after(const std::string &message, const std::string &open)
 {
-  static const std::regex line(R"([Ll]ine <?([0-9]+)>?:)");
-  static const std::regex named(R"(entry named (.+?) does not match)");
-  static const std::regex declared(R"(entry <([^>]*)>|parameter <([^>]*)>)");
-  static const std::regex subsection(R"(subsection <([^>]*)>|No entry with name <([^>]*)>|no such subsection to be entered: ([^ .]+))");
-  std::smatch m, l;
-  const int at = std::regex_search(message, l, line) ? std::stoi(l[1]) : -1;
-  const std::string prefix = at > 0 ? section_path_at(text, at) : "";
-  if (std::regex_search(message, m, named))
-    return prefix + m[1].str();
-  if (std::regex_search(message, m, declared))
-    return prefix + (m[1].matched ? m[1].str() : m[2].str());
-  if (std::regex_search(message, m, subsection))
-    return prefix + (m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str());
+  const auto at = message.find(open);
+  if (at == std::string::npos)
+    return "";
+  const auto close = message.find('>', at + open.size());
+  return close == std::string::npos ? "" : message.substr(at + open.size(), close - at - open.size());
+}
+
+/// The parameter a ParameterHandler message is about, with its section path: read from
+/// the statement at the line the message gives (a `set` names its entry, a `subsection`
+/// its name), else from the entry the message quotes; "(file)" when it names none.
+std::string parameter_in(const std::string &what, const ParameterText &text)
+{
+  const unsigned int line = line_in(what);
+  if (line > 0) {
+    const std::string s = text.statement_at(line);
+    const auto eq = s.find('=');
+    if ((s.rfind("set ", 0) == 0 || s.rfind("SET ", 0) == 0) && eq != std::string::npos)
+      return text.section_at(line) + trimmed(s.substr(4, eq - 4));
+    if (s.rfind("subsection ", 0) == 0 || s.rfind("SUBSECTION ", 0) == 0)
+      return text.section_at(line) + trimmed(s.substr(11));
+    return "(file)";
+  }
+  for (const char *open : {"entry <", "parameter <", "No entry with name <", "subsection <"}) {
+    const std::string name = quoted_after(what, open);
+    if (!name.empty())
+      return name;
+  }
   return "(file)";
 }
 
 } // namespace
 
-CaseError parameter_error(const dealii::ExceptionBase &e, const std::string &text, const std::string &path)
+CaseError parameter_error(const dealii::ExceptionBase &e, const ParameterText &text, const std::string &path)
 {
-  const std::string msg = user_message(e.what(), path);
-  return CaseError(path, parameter_in(msg, text), msg);
+  return CaseError(path, parameter_in(e.what(), text), user_message(e.what(), text, path));
 }
 
 std::string read_parameter_file(const std::string &path, const std::string &kind)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw CaseError(path, "(file)", "cannot be read: expected a readable " + kind);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  std::string text = read_input_file(path, kind, input_limits::max_file_bytes);
+  check_utf8_text(text, path);
+  return text;
 }
 
 void parse_parameter_text(dealii::ParameterHandler &prm, const std::string &text, const std::string &path)
 {
+  parse_parameter_text(prm, expand_parameter_text(text, path), path);
+}
+
+void parse_parameter_text(dealii::ParameterHandler &prm, const ParameterText &text, const std::string &path)
+{
   try {
-    std::istringstream s(text);
+    std::istringstream s(text.text);
     prm.parse_input(s, path, "", false);
   } catch (const dealii::ExceptionBase &e) {
     throw parameter_error(e, text, path);
   } catch (const std::exception &e) {
-    throw CaseError(path, "(file)", user_message(e.what(), path));
+    throw CaseError(path, "(file)", user_message(e.what(), text, path));
   }
 }
 
