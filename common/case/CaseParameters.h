@@ -120,6 +120,7 @@ struct ContinuumParameters {
   unsigned int cells_per_edge = 4;
   unsigned int degree = 1;
   std::string volumetric_integration = "full"; ///< full | b-bar
+  std::string kinematics = "finite strain";    ///< finite strain | small strain
   double imperfection_radius = 0.0;     ///< [m]; 0 = none
   double imperfection_factor = 0.9;     ///< cohesion multiplier inside it
   std::vector<double> imperfection_centre{0.5, 0.5, 0.5}; ///< relative to L0

@@ -107,6 +107,10 @@ void declare_continuum(dealii::ParameterHandler &prm)
   prm.declare_entry("friction angle", "0:30", Anything(), "Friction angle phi(kappa) [deg], same format.");
   prm.declare_entry("dilatancy angle", "0:5", Anything(),
                     "Dilatancy angle psi(kappa) [deg], same format; psi <= phi (non-associated flow).");
+  prm.declare_entry("kinematics", "finite strain", Selection("finite strain|small strain"),
+                    "finite strain: multiplicative plasticity with logarithmic elastic strain, F from the box edges "
+                    "(material point) or total Lagrangian (FE cube), Cauchy stress as force over current area; "
+                    "small strain: eps = sym grad u, force over initial area (for comparison). Both engines.");
   prm.declare_entry("cells per edge", "4", Integer(1, 512), "Hexahedra per cube edge.");
   prm.declare_entry("degree", "1", Integer(1, 4), "Polynomial degree of the FE_Q displacement.");
   prm.declare_entry("volumetric integration", "full", Selection("full|b-bar"),
@@ -196,6 +200,7 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   p.cells_per_edge = prm.get_integer("cells per edge");
   p.degree = prm.get_integer("degree");
   p.volumetric_integration = prm.get("volumetric integration");
+  p.kinematics = prm.get("kinematics");
   p.imperfection_radius = prm.get_double("imperfection radius");
   p.imperfection_factor = prm.get_double("imperfection factor");
   p.imperfection_centre = dealii::Utilities::string_to_double(
@@ -210,6 +215,8 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   p.reference_element_size = prm.get_double("reference element size");
   p.nikolaevsky = parse_nikolaevsky(prm, r);
   prm.leave_subsection();
+  if (p.volumetric_integration == "b-bar" && p.kinematics == "finite strain")
+    r.fail("continuum/volumetric integration", "b-bar is a small-strain method: set kinematics = small strain");
   for (const auto &[k, c] : p.cohesion.points)
     if (c < 0)
       r.fail("continuum/cohesion", "cohesion must be >= 0 Pa");

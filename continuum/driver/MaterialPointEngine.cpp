@@ -39,13 +39,51 @@ MaterialPointEngine::MaterialPointEngine(std::shared_ptr<const ConstitutiveModel
     throw std::invalid_argument("MaterialPointEngine: localization_directions must be >= 10");
   // The initial stress is carried as an elastic pre-strain that the box strain does not see.
   prestrain_ = model_->elasticity().compliance() * to_mandel(prm_.initial_stress * Tensor3::Identity());
-  state_ = model_->update(prestrain_, PlasticHistory{});
+  Evaluation start;
+  if (!evaluate(Tensor3::Zero(), start))
+    throw std::invalid_argument("MaterialPointEngine: the initial stress is not admissible");
+  state_ = start.state;
 }
 
 MaterialPointEngine::MaterialPointEngine(const MaterialParameters &material,
                                          const MaterialPointParameters &parameters)
   : MaterialPointEngine(make_material_factory(material)->make(MaterialVariant{}), parameters)
 {}
+
+// Finite strain on the box. F = diag(1 + eps) never rotates, so F, b^e, tau and the plastic
+// flow stay diagonal and the exponential map of FiniteStrain.h reduces to the small-strain
+// update on the total logarithmic strain e = ln(1 + eps) (log1p: full precision at small
+// strain) with the plastic logarithmic strain as history:
+//     tau = model(e + eps_0, history),  sigma = tau / J,  J = exp(tr e) = prod(1 + eps_i),
+//     d sigma_a / d eps_b = (D_ab - tau_a) / (J (1 + eps_b)),
+// D the model's consistent tangent. (A test checks it against finite_strain_update.)
+bool MaterialPointEngine::evaluate(const Tensor3 &eps, Evaluation &out) const
+{
+  try {
+    if (prm_.kinematics == Kinematics::small_strain) {
+      out.state = model_->update(to_mandel(eps) + prestrain_, state_.history);
+      out.axial_tangent = out.state.tangent.topLeftCorner<3, 3>();
+      return true;
+    }
+    Vector3 stretch, log_strain;
+    for (int a = 0; a < 3; ++a) {
+      stretch[a] = 1.0 + eps(a, a);
+      log_strain[a] = std::log1p(eps(a, a));
+    }
+    if (!(stretch.minCoeff() > 0.0))
+      return false;
+    const double J = stretch.prod();
+    out.state = model_->update(to_mandel(Matrix3(log_strain.asDiagonal())) + prestrain_, state_.history);
+    const Vector6 tau = out.state.stress;
+    out.state.stress = tau / J;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        out.axial_tangent(a, b) = (out.state.tangent(a, b) - tau[a]) / (J * stretch[b]);
+    return true;
+  } catch (const ReturnMapFailure &) {
+    return false;
+  }
+}
 
 std::vector<ExtraColumn> MaterialPointEngine::extra_columns() const
 {
@@ -101,23 +139,15 @@ bool MaterialPointEngine::increment(double t)
     else
       stress_axes[n_s++] = a;
   }
-  auto evaluate = [&](const Tensor3 &e, MaterialPointUpdate &out) {
-    try {
-      out = model_->update(to_mandel(e) + prestrain_, state_.history);
-      return true;
-    } catch (const ReturnMapFailure &) {
-      return false;
-    }
-  };
-
-  MaterialPointUpdate up;
+  Evaluation up;
   if (!evaluate(eps, up))
     return false;
   unsigned it = 0;
   if (n_s > 0) {
     Eigen::VectorXd target(n_s), r(n_s);
     // Mandel slots 0..2 are the normal components, unweighted.
-    auto residual = [&](const MaterialPointUpdate &u, Eigen::VectorXd &res) {
+    auto residual = [&](const Evaluation &e, Eigen::VectorXd &res) {
+      const MaterialPointUpdate &u = e.state;
       double scale = 1.0;
       for (int i = 0; i < 3; ++i)
         scale = std::max(scale, std::abs(u.stress[i]));
@@ -138,7 +168,7 @@ bool MaterialPointEngine::increment(double t)
       Eigen::MatrixXd J(n_s, n_s);
       for (int k = 0; k < n_s; ++k)
         for (int m = 0; m < n_s; ++m)
-          J(k, m) = up.tangent(stress_axes[k], stress_axes[m]);
+          J(k, m) = up.axial_tangent(stress_axes[k], stress_axes[m]);
       // Symmetric programs stay symmetric: stress axes with the same target and the same
       // strain are tied to one unknown (P maps tied unknowns to axes), so the corner of the
       // yield surface a triaxial test sits on (sigma_1 = sigma_2, where the split of the
@@ -168,7 +198,7 @@ bool MaterialPointEngine::increment(double t)
       // Damped update: halve while the residual norm grows.
       double alpha = 1.0;
       Eigen::VectorXd r_new(n_s);
-      MaterialPointUpdate trial;
+      Evaluation trial;
       Tensor3 eps_trial;
       bool ok = false;
       for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
@@ -192,7 +222,7 @@ bool MaterialPointEngine::increment(double t)
   last_iterations_ = it;
   max_iterations_in_advance_ = std::max(max_iterations_in_advance_, it);
   strain_ = eps;
-  state_ = up;
+  state_ = up.state;
   time_ = t;
   if (state_.region != ReturnRegion::elastic) {
     const LocalizationResult loc = scan_.scan(state_.tangent, model_->elasticity().stiffness());

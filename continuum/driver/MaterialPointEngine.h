@@ -26,12 +26,25 @@
 // begin_control to the target over the first advance of the stage (a jump cannot be
 // subdivided, a ramp can); after that the target is held exactly.
 //
+// Kinematics (`kinematics`, default finite strain; continuum/models/FiniteStrain.h). The
+// program's box edges L_i(t) = L_i0 (1 + eps_i(t)) give the deformation gradient exactly,
+//     F = diag(1 + eps_x, 1 + eps_y, 1 + eps_z),
+// so S0's isochoric program has det F = 1 to round-off and tr(ln V) = 0. The box never
+// rotates, so the exponential map of FiniteStrain.h is the model's update on the
+// logarithmic strain ln(1 + eps) (evaluate() in the .cpp); the point reports the Cauchy
+// stress sigma = tau / J, the force over the current area, which is what the DEM's walls
+// measure. With small strain the model is called on eps = diag(eps_i) and sigma is its stress.
+//
 // Response: strain = diag(eps) (engineering strain of the box, relative to the program
-// start), stress = sigma, extras = kappa, state flag, localization indicator and first
-// onset of localization (time and band normal).
+// start; the log strain ln(1 + eps) follows from it), stress = sigma (Cauchy), extras =
+// kappa, state flag, localization indicator and first onset of localization (time and band
+// normal). The indicator scans the tangent of the stress measure the return works in
+// (Kirchhoff against logarithmic strain at finite strain): the geometric terms of the
+// spatial tangent, of the order of the stress over the modulus, are left out.
 #include "common/LoadingEngine.h"
 #include "continuum/driver/Materials.h"
 #include "continuum/models/AcousticTensorScan.h"
+#include "continuum/models/FiniteStrain.h"
 
 #include <memory>
 
@@ -45,6 +58,7 @@ struct MaterialPointParameters {
   unsigned max_iterations = 30;       ///< Newton iterations per increment on stress axes
   unsigned max_cutbacks = 12;         ///< halvings of an increment before giving up
   double initial_stress = 0.0;        ///< isotropic initial stress [Pa], tension positive
+  Kinematics kinematics = Kinematics::finite_strain;
 };
 
 class MaterialPointEngine : public LoadingEngine {
@@ -72,6 +86,15 @@ public:
 private:
   /// Target stress of stress axis `a` at time t (with the stage-start ramp).
   double target_stress(int axis, double t) const;
+  /// The point at box strain `eps` from the committed state: the state to commit (Cauchy
+  /// stress; history, region and tangent of the model's update, which the localization
+  /// scan reads) and d sigma_aa / d eps_bb.
+  struct Evaluation {
+    MaterialPointUpdate state;
+    Matrix3 axial_tangent = Matrix3::Zero();
+  };
+  /// False when the return map fails.
+  bool evaluate(const Tensor3 &eps, Evaluation &out) const;
   /// One increment to time t; false if the stress iteration did not converge.
   bool increment(double t);
 

@@ -49,6 +49,19 @@ Vector6 mandel(const SymmetricTensor<2, 3> &t)
   return v;
 }
 
+/// The trial record of a finite-strain point (QuadraturePointData): Cauchy stress, the
+/// logarithmic tangent, region, kappa and the history to commit.
+void record_finite(QuadraturePointData &d, const FiniteStrainUpdate &f)
+{
+  d.trial.stress = to_mandel(f.cauchy_stress());
+  d.trial.tangent = f.logarithmic_tangent;
+  d.trial.region = f.region;
+  d.trial.trial_yield_value = f.trial_yield_value;
+  d.trial.local_iterations = f.local_iterations;
+  d.trial.history.kappa = f.history.kappa;
+  d.trial_finite = f.history;
+}
+
 void check_parameters(const CubeParameters &p)
 {
   auto fail = [](const std::string &name, const std::string &what) {
@@ -81,6 +94,8 @@ void check_parameters(const CubeParameters &p)
     fail("regularization", "must be crack-band or none");
   if (p.volumetric_integration != "full" && p.volumetric_integration != "b-bar")
     fail("volumetric integration", "must be full or b-bar");
+  if (p.volumetric_integration == "b-bar" && p.kinematics == Kinematics::finite_strain)
+    fail("volumetric integration", "b-bar is a small-strain method: use it with kinematics = small strain");
   if (!(p.band_reference_width >= 0.0))
     fail("band reference width", "must be >= 0");
   if (p.localization_directions < 10)
@@ -91,6 +106,8 @@ void check_parameters(const CubeParameters &p)
     fail("output every", "must be >= 1");
 }
 } // namespace
+
+void check_cube_parameters(const CubeParameters &p) { check_parameters(p); }
 
 // @sect3{Setup}
 
@@ -223,7 +240,14 @@ void CubeEngine::Impl::setup_quadrature_data()
   if (prm.imperfection_radius > 0.0)
     materials[weak] = factory->make(weak);
   elastic_tangent = materials[base]->elasticity().stiffness();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l)
+          elastic_tangent_9(pair_index(i, j), pair_index(k, l)) = tensor4_component(elastic_tangent, i, j, k, l);
   prestrain = materials[base]->elasticity().compliance() * to_mandel(prm.initial_stress * Tensor3::Identity());
+  // The walls carry the initial stress from the start (the first sample reports it).
+  committed_wall_stress = Vector3::Constant(prm.initial_stress);
 
   FEValues<3> fe_values(fe, quadrature, update_quadrature_points | update_JxW_values);
   const Point<3> centre(prm.imperfection_centre[0], prm.imperfection_centre[1], prm.imperfection_centre[2]);
@@ -240,7 +264,12 @@ void CubeEngine::Impl::setup_quadrature_data()
       d.JxW = fe_values.JxW(q);
       d.weak = prm.imperfection_radius > 0.0 && x.distance(centre) < prm.imperfection_radius;
       d.material = (d.weak ? materials[weak] : materials[base]).get();
-      d.trial = d.material->update(prestrain, PlasticHistory{});
+      if (prm.kinematics == Kinematics::finite_strain) {
+        d.old_finite = initial_finite_strain_history(*d.material, prm.initial_stress * Tensor3::Identity());
+        record_finite(d, finite_strain_update(*d.material, Matrix3::Identity(), d.old_finite));
+      } else {
+        d.trial = d.material->update(prestrain, PlasticHistory{});
+      }
       d.old_stress = d.trial.stress;
     }
   }
@@ -274,12 +303,63 @@ double CubeEngine::Impl::target_stress(int axis, double t) const
 // @sect3{Assembly}
 //
 // One pass over the locally owned cells evaluates the material at every quadrature point
-// for the current iterate (Delta eps = eps(u) - eps_n from the committed state) and adds
+// for the current iterate and adds the cell's internal force, tractions and tangent
+// (cell_small_strain / cell_finite_strain, cell_tractions). The residual is condensed with
+// the homogeneous wall constraints (constrained rows vanish); the unconstrained internal
+// force is kept for the wall reactions.
+struct CubeEngine::Impl::CellTerms {
+  CellTerms(const Impl &m, bool matrix)
+    : fe_values(m.fe, m.quadrature, update_gradients | update_JxW_values)
+    , fe_face_values(m.fe, m.face_quadrature, update_values | update_gradients | update_JxW_values)
+    , with_matrix(matrix)
+    , matrix(m.fe.n_dofs_per_cell(), m.fe.n_dofs_per_cell())
+    , force(m.fe.n_dofs_per_cell())
+    , external(m.fe.n_dofs_per_cell())
+    , dof_indices(m.fe.n_dofs_per_cell())
+    , strains(m.quadrature.size())
+    , gradients(m.quadrature.size())
+    , face_gradients(m.face_quadrature.size())
+    , b(m.fe.n_dofs_per_cell())
+    , Cb(m.fe.n_dofs_per_cell())
+    , mean_div(m.fe.n_dofs_per_cell())
+    , spatial(m.fe.n_dofs_per_cell())
+    , component(m.fe.n_dofs_per_cell())
+    , w(9, m.fe.n_dofs_per_cell())
+  {
+    for (unsigned i = 0; i < component.size(); ++i)
+      component[i] = m.fe.system_to_component_index(i).first;
+  }
+  void reinit(const DoFHandler<3>::active_cell_iterator &c)
+  {
+    cell = c;
+    fe_values.reinit(cell);
+    cell->get_dof_indices(dof_indices);
+    matrix = 0.0;
+    force = 0.0;
+    external = 0.0;
+  }
+
+  FEValues<3> fe_values;
+  FEFaceValues<3> fe_face_values;
+  DoFHandler<3>::active_cell_iterator cell;
+  bool with_matrix;
+  FullMatrix<double> matrix;              ///< K of the cell
+  dealii::Vector<double> force, external; ///< F_int, F_ext of the cell
+  std::vector<types::global_dof_index> dof_indices;
+  // Scratch.
+  std::vector<SymmetricTensor<2, 3>> strains;
+  std::vector<Tensor<2, 3>> gradients, face_gradients;
+  std::vector<Vector6> b, Cb;
+  std::vector<double> mean_div;
+  std::vector<Vector3> spatial;     ///< grad_x N_i = F^-T Grad N_i (row `component[i]`)
+  std::vector<unsigned> component;  ///< the one nonzero component of shape function i
+  Eigen::Matrix<double, 9, Eigen::Dynamic> w; ///< (J a) : grad_x N_j, column j
+};
+
+// Small strain:
 //     R_i = int B_i : sigma dV - int_{Gamma_t} N_i . t dA,   K_ij = int B_i : C_alg : B_j dV.
 // With Mandel vectors b_i of sym grad N_i, B_i : sigma = b_i . sigma_M and
-// B_i : C : B_j = b_i . (C_M b_j). The residual is condensed with the homogeneous wall
-// constraints (constrained rows vanish); the unconstrained internal force is kept for the
-// wall reactions.
+// B_i : C : B_j = b_i . (C_M b_j).
 //
 // B-bar (Hughes 1980, `volumetric integration = b-bar`): the volumetric part of the strain
 // and of every b_i is replaced by its cell average,
@@ -288,23 +368,177 @@ double CubeEngine::Impl::target_stress(int axis, double t) const
 // unchanged; for Q1 the volumetric constraints drop from 8 to 1 per cell, so nearly
 // isochoric plastic flow no longer locks. K_ij = int b_bar_i . C b_bar_j stays the exact
 // derivative of the B-bar residual.
+bool CubeEngine::Impl::cell_small_strain(CellTerms &c)
+{
+  const FEValuesExtractors::Vector displacement(0);
+  FEValues<3> &fv = c.fe_values;
+  const unsigned dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
+  const bool bbar = prm.volumetric_integration == "b-bar";
+  const Vector6 m = mandel_identity();
+  fv[displacement].get_function_symmetric_gradients(solution, c.strains);
+  if (bbar) {
+    double volume = 0.0, mean_trace = 0.0;
+    std::fill(c.mean_div.begin(), c.mean_div.end(), 0.0);
+    for (unsigned q = 0; q < n_q; ++q) {
+      const double JxW = fv.JxW(q);
+      volume += JxW;
+      mean_trace += trace(c.strains[q]) * JxW;
+      for (unsigned i = 0; i < dofs_per_cell; ++i)
+        c.mean_div[i] += fv[displacement].divergence(i, q) * JxW;
+    }
+    mean_trace /= volume;
+    for (double &d : c.mean_div)
+      d /= volume;
+    for (unsigned q = 0; q < n_q; ++q)
+      c.strains[q] += ((mean_trace - trace(c.strains[q])) / 3.0) * unit_symmetric_tensor<3>();
+  }
+  const auto data = qp_data.get_data(Cell(c.cell));
+  bool ok = true;
+  for (unsigned q = 0; q < n_q; ++q) {
+    QuadraturePointData &d = *data[q];
+    try {
+      d.trial = d.material->update(mandel(c.strains[q]) + prestrain, d.old_history);
+    } catch (const ReturnMapFailure &) {
+      ok = false; // every rank still finishes the pass (collective compress in assemble)
+      d.trial.stress = d.old_stress;
+      d.trial.tangent = elastic_tangent;
+    }
+    const Vector6 &sigma = d.trial.stress;
+    const double JxW = fv.JxW(q);
+    for (unsigned i = 0; i < dofs_per_cell; ++i) {
+      c.b[i] = mandel(fv[displacement].symmetric_gradient(i, q));
+      if (bbar)
+        c.b[i] += ((c.mean_div[i] - fv[displacement].divergence(i, q)) / 3.0) * m;
+      c.force(i) += c.b[i].dot(sigma) * JxW;
+    }
+    if (c.with_matrix) {
+      const Matrix6 C = d.trial.region == ReturnRegion::apex
+                          ? Matrix6(d.trial.tangent + prm.apex_tangent_fraction * elastic_tangent)
+                          : d.trial.tangent;
+      for (unsigned j = 0; j < dofs_per_cell; ++j)
+        c.Cb[j] = C * c.b[j];
+      for (unsigned i = 0; i < dofs_per_cell; ++i)
+        for (unsigned j = 0; j < dofs_per_cell; ++j)
+          c.matrix(i, j) += c.b[i].dot(c.Cb[j]) * JxW;
+    }
+  }
+  return ok;
+}
+
+// Finite strain, total Lagrangian (the reference mesh is integrated; deal.II step-44):
+//     F = I + Grad u,   R_i = int_Omega0 grad_x N_i : tau dV0 - F_ext,i,
+//     K_ij = int_Omega0 grad_x N_i : (J a) : grad_x N_j dV0 + (load stiffness),
+// with grad_x N = Grad N F^{-1}, tau the Kirchhoff stress and J a the spatial tangent of
+// FiniteStrain.h (geometric stiffness included: (J a) : H = d tau - tau H^T). For the
+// primitive vector element every shape function has one nonzero component a_i, so
+// grad_x N_i has one nonzero row, F^-T Grad N_i.
+bool CubeEngine::Impl::cell_finite_strain(CellTerms &c)
+{
+  const FEValuesExtractors::Vector displacement(0);
+  FEValues<3> &fv = c.fe_values;
+  const unsigned dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
+  fv[displacement].get_function_gradients(solution, c.gradients);
+  const auto data = qp_data.get_data(Cell(c.cell));
+  bool ok = true;
+  auto &w = c.w;
+  for (unsigned q = 0; q < n_q; ++q) {
+    QuadraturePointData &d = *data[q];
+    Matrix3 F = Matrix3::Identity();
+    for (unsigned i = 0; i < 3; ++i)
+      for (unsigned j = 0; j < 3; ++j)
+        F(i, j) += c.gradients[q][i][j];
+    Matrix3 tau;
+    Matrix9 T;
+    try {
+      const FiniteStrainUpdate f = finite_strain_update(*d.material, F, d.old_finite);
+      record_finite(d, f);
+      tau = f.kirchhoff_stress;
+      T = f.region == ReturnRegion::apex ? Matrix9(f.spatial_tangent + prm.apex_tangent_fraction * elastic_tangent_9)
+                                         : f.spatial_tangent;
+    } catch (const ReturnMapFailure &) {
+      ok = false; // every rank still finishes the pass (collective compress in assemble)
+      F = d.old_finite.deformation_gradient;
+      tau = from_mandel(d.old_stress) * F.determinant();
+      T = elastic_tangent_9;
+    }
+    const Matrix3 F_inv_T = F.inverse().transpose();
+    const double JxW = fv.JxW(q);
+    for (unsigned i = 0; i < dofs_per_cell; ++i) {
+      const Tensor<1, 3> G = fv.shape_grad(i, q);
+      c.spatial[i] = F_inv_T * Vector3(G[0], G[1], G[2]);
+      c.force(i) += c.spatial[i].dot(tau.row(c.component[i])) * JxW;
+    }
+    if (!c.with_matrix)
+      continue;
+    // w_j = (J a) : grad_x N_j, then K_ij = grad_x N_i : w_j.
+    for (unsigned j = 0; j < dofs_per_cell; ++j)
+      w.col(j) = T.middleCols<3>(3 * c.component[j]) * c.spatial[j];
+    for (unsigned i = 0; i < dofs_per_cell; ++i) {
+      const unsigned a = c.component[i];
+      for (unsigned j = 0; j < dofs_per_cell; ++j)
+        c.matrix(i, j) += c.spatial[i].dot(w.col(j).segment<3>(3 * a)) * JxW;
+    }
+  }
+  return ok;
+}
+
+// Tractions on the moving walls of stress axes: a frictionless wall pushes along e_a only,
+// with the program's stress per CURRENT area of the face projected on the wall (the DEM's
+// wall force over the wall area):
+//     F_ext,i = int_{Gamma0_a} N_i sigma*_a cof(F)_aa dA0,   cof(F)_aa = F_bb F_cc - F_bc F_cb
+// (Nanson: n da = cof(F) N dA, N = e_a), a follower load whose linearization
+// d cof(F)_aa = F_cc dF_bb + F_bb dF_cc - F_cb dF_bc - F_bc dF_cb enters K as -dF_ext/du.
+// At small strain cof(F)_aa = 1: the load per initial area.
+void CubeEngine::Impl::cell_tractions(CellTerms &c, double t)
+{
+  const bool finite = prm.kinematics == Kinematics::finite_strain;
+  const FEValuesExtractors::Vector displacement(0);
+  FEFaceValues<3> &fv = c.fe_face_values;
+  const unsigned dofs_per_cell = fe.n_dofs_per_cell();
+  for (unsigned a = 0; a < 3; ++a) {
+    if (control.kinematic(a))
+      continue;
+    const double traction = target_stress(a, t);
+    const unsigned b = (a + 1) % 3, e = (a + 2) % 3;
+    for (const unsigned f : c.cell->face_indices()) {
+      if (!c.cell->face(f)->at_boundary() || c.cell->face(f)->boundary_id() != 2 * a + 1)
+        continue;
+      fv.reinit(c.cell, f);
+      if (finite)
+        fv[displacement].get_function_gradients(solution, c.face_gradients);
+      for (unsigned q = 0; q < face_quadrature.size(); ++q) {
+        Matrix3 F = Matrix3::Identity();
+        if (finite)
+          for (unsigned i = 0; i < 3; ++i)
+            for (unsigned j = 0; j < 3; ++j)
+              F(i, j) += c.face_gradients[q][i][j];
+        const double area = F(b, b) * F(e, e) - F(b, e) * F(e, b);
+        for (unsigned i = 0; i < dofs_per_cell; ++i) {
+          if (c.component[i] != a)
+            continue;
+          const double load = fv.shape_value(i, q) * traction * fv.JxW(q);
+          c.external(i) += load * area;
+          if (!finite || !c.with_matrix)
+            continue;
+          for (unsigned j = 0; j < dofs_per_cell; ++j) {
+            const Tensor<1, 3> G = fv.shape_grad(j, q);
+            double d_area = 0.0;
+            if (c.component[j] == b)
+              d_area = F(e, e) * G[b] - F(e, b) * G[e];
+            else if (c.component[j] == e)
+              d_area = F(b, b) * G[e] - F(b, e) * G[b];
+            c.matrix(i, j) -= load * d_area;
+          }
+        }
+      }
+    }
+  }
+}
+
 double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
 {
   Timer timer;
-  FEValues<3> fe_values(fe, quadrature, update_gradients | update_JxW_values);
-  FEFaceValues<3> fe_face_values(fe, face_quadrature, update_values | update_JxW_values);
-  const FEValuesExtractors::Vector displacement(0);
-  const unsigned dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
-
-  FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-  dealii::Vector<double> cell_rhs(dofs_per_cell), cell_force(dofs_per_cell);
-  std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-  std::vector<SymmetricTensor<2, 3>> strains(n_q);
-  std::vector<Vector6> b(dofs_per_cell), Cb(dofs_per_cell);
-  const bool bbar = prm.volumetric_integration == "b-bar";
-  const Vector6 m = mandel_identity();
-  std::vector<double> mean_div(bbar ? dofs_per_cell : 0);
-
+  CellTerms terms(*this, with_matrix);
   if (with_matrix)
     matrix = 0.0;
   rhs = 0.0;
@@ -316,80 +550,18 @@ double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
   for (const auto &cell : dof_handler.active_cell_iterators()) {
     if (!cell->is_locally_owned())
       continue;
-    fe_values.reinit(cell);
-    cell->get_dof_indices(dof_indices);
-    fe_values[displacement].get_function_symmetric_gradients(solution, strains);
-    if (bbar) {
-      double volume = 0.0, mean_trace = 0.0;
-      std::fill(mean_div.begin(), mean_div.end(), 0.0);
-      for (unsigned q = 0; q < n_q; ++q) {
-        const double JxW = fe_values.JxW(q);
-        volume += JxW;
-        mean_trace += trace(strains[q]) * JxW;
-        for (unsigned i = 0; i < dofs_per_cell; ++i)
-          mean_div[i] += fe_values[displacement].divergence(i, q) * JxW;
-      }
-      mean_trace /= volume;
-      for (double &d : mean_div)
-        d /= volume;
-      for (unsigned q = 0; q < n_q; ++q)
-        strains[q] += ((mean_trace - trace(strains[q])) / 3.0) * unit_symmetric_tensor<3>();
-    }
-    const auto data = qp_data.get_data(Cell(cell));
-    cell_matrix = 0.0;
-    cell_force = 0.0;
-    for (unsigned q = 0; q < n_q; ++q) {
-      QuadraturePointData &d = *data[q];
-      try {
-        d.trial = d.material->update(mandel(strains[q]) + prestrain, d.old_history);
-      } catch (const ReturnMapFailure &) {
-        failed = true; // every rank still finishes the pass (collective compress below)
-        d.trial.stress = d.old_stress;
-        d.trial.tangent = elastic_tangent;
-      }
-      const Vector6 &sigma = d.trial.stress;
-      const double JxW = fe_values.JxW(q);
-      for (unsigned i = 0; i < dofs_per_cell; ++i) {
-        b[i] = mandel(fe_values[displacement].symmetric_gradient(i, q));
-        if (bbar)
-          b[i] += ((mean_div[i] - fe_values[displacement].divergence(i, q)) / 3.0) * m;
-        cell_force(i) += b[i].dot(sigma) * JxW;
-      }
-      if (with_matrix) {
-        const Matrix6 C = d.trial.region == ReturnRegion::apex
-                            ? Matrix6(d.trial.tangent + prm.apex_tangent_fraction * elastic_tangent)
-                            : d.trial.tangent;
-        for (unsigned j = 0; j < dofs_per_cell; ++j)
-          Cb[j] = C * b[j];
-        for (unsigned i = 0; i < dofs_per_cell; ++i)
-          for (unsigned j = 0; j < dofs_per_cell; ++j)
-            cell_matrix(i, j) += b[i].dot(Cb[j]) * JxW;
-      }
-    }
-    // Tractions on the moving walls of stress axes: t = sigma*_a e_a on x_a = L.
-    cell_rhs = 0.0; // F_ext of the cell
-    for (unsigned a = 0; a < 3; ++a) {
-      if (control.kinematic(a))
-        continue;
-      const double traction = target_stress(a, t);
-      for (const unsigned f : cell->face_indices()) {
-        if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != 2 * a + 1)
-          continue;
-        fe_face_values.reinit(cell, f);
-        for (unsigned q = 0; q < face_quadrature.size(); ++q)
-          for (unsigned i = 0; i < dofs_per_cell; ++i)
-            if (fe.system_to_component_index(i).first == a)
-              cell_rhs(i) += fe_face_values.shape_value(i, q) * traction * fe_face_values.JxW(q);
-      }
-    }
-    external_norm2 += cell_rhs.norm_sqr(); // |F_ext|^2 up to shared-node cross terms
-    internal_force.add(dof_indices, cell_force);
-    cell_rhs -= cell_force; // -R = F_ext - F_int
+    terms.reinit(cell);
+    const bool ok = prm.kinematics == Kinematics::finite_strain ? cell_finite_strain(terms) : cell_small_strain(terms);
+    failed = failed || !ok;
+    cell_tractions(terms, t);
+    external_norm2 += terms.external.norm_sqr(); // |F_ext|^2 up to shared-node cross terms
+    internal_force.add(terms.dof_indices, terms.force);
+    terms.external -= terms.force; // -R = F_ext - F_int
     if (with_matrix)
       (predictor ? predictor_constraints : constraints)
-        .distribute_local_to_global(cell_matrix, cell_rhs, dof_indices, matrix, rhs);
+        .distribute_local_to_global(terms.matrix, terms.external, terms.dof_indices, matrix, rhs);
     else
-      constraints.distribute_local_to_global(cell_rhs, dof_indices, rhs);
+      constraints.distribute_local_to_global(terms.external, terms.dof_indices, rhs);
   }
   if (with_matrix)
     matrix.compress(VectorOperation::add);
@@ -600,6 +772,7 @@ void CubeEngine::Impl::commit()
     if (cell->is_locally_owned())
       for (const auto &d : qp_data.get_data(cell)) {
         d->old_history = d->trial.history;
+        d->old_finite = d->trial_finite;
         d->old_stress = d->trial.stress;
         d->old_region = d->trial.region;
       }
@@ -613,6 +786,7 @@ void CubeEngine::Impl::revert()
     if (cell->is_locally_owned())
       for (const auto &d : qp_data.get_data(cell)) {
         d->trial.history = d->old_history;
+        d->trial_finite = d->old_finite;
         d->trial.stress = d->old_stress;
         d->trial.region = d->old_region;
       }
@@ -665,6 +839,9 @@ void CubeEngine::Impl::update_localization(double t)
 
 // @sect3{Measurement}
 
+// Wall stress = reaction force / wall area: the current area of the face projected on the
+// wall at finite strain (the Cauchy stress a DEM wall measures), the initial area L^2 at
+// small strain (force over initial area, the work conjugate of the engineering strain).
 Vector3 CubeEngine::Impl::wall_stresses() const
 {
   Vector3 force = Vector3::Zero();
@@ -674,7 +851,36 @@ Vector3 CubeEngine::Impl::wall_stresses() const
         force[a] += internal_force(i);
   for (unsigned a = 0; a < 3; ++a)
     force[a] = Utilities::MPI::sum(force[a], comm);
+  if (prm.kinematics == Kinematics::finite_strain)
+    return force.cwiseQuotient(face_areas());
   return force / (prm.side * prm.side);
+}
+
+// A_a = int_{Gamma0_a} cof(F)_aa dA0 over the face x_a = L (Nanson's formula, projected on e_a).
+Vector3 CubeEngine::Impl::face_areas() const
+{
+  FEFaceValues<3> fe_face_values(fe, face_quadrature, update_gradients | update_JxW_values);
+  const FEValuesExtractors::Vector displacement(0);
+  std::vector<Tensor<2, 3>> grad(face_quadrature.size());
+  Vector3 area = Vector3::Zero();
+  for (const auto &cell : dof_handler.active_cell_iterators()) {
+    if (!cell->is_locally_owned() || !cell->at_boundary())
+      continue;
+    for (const unsigned f : cell->face_indices()) {
+      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() % 2 == 0)
+        continue;
+      const unsigned a = cell->face(f)->boundary_id() / 2, b = (a + 1) % 3, e = (a + 2) % 3;
+      fe_face_values.reinit(cell, f);
+      fe_face_values[displacement].get_function_gradients(solution, grad);
+      for (unsigned q = 0; q < face_quadrature.size(); ++q) {
+        const double Fbb = 1.0 + grad[q][b][b], Fee = 1.0 + grad[q][e][e];
+        area[a] += (Fbb * Fee - grad[q][b][e] * grad[q][e][b]) * fe_face_values.JxW(q);
+      }
+    }
+  }
+  for (unsigned a = 0; a < 3; ++a)
+    area[a] = Utilities::MPI::sum(area[a], comm);
+  return area;
 }
 
 Vector3 CubeEngine::Impl::face_strains() const
@@ -702,16 +908,22 @@ Vector3 CubeEngine::Impl::face_strains() const
   return integral / (L * L * L);
 }
 
+// Volume average of the Cauchy stress over the current configuration (dv = J dV0).
 Tensor3 CubeEngine::Impl::volume_average_stress() const
 {
   Tensor3 s = Tensor3::Zero();
+  double volume = 0.0;
+  const bool finite = prm.kinematics == Kinematics::finite_strain;
   for (const auto &cell : tria.active_cell_iterators())
     if (cell->is_locally_owned())
-      for (const auto &d : qp_data.get_data(cell))
-        s += from_mandel(d->old_stress) * d->JxW;
+      for (const auto &d : qp_data.get_data(cell)) {
+        const double dv = d->JxW * (finite ? d->old_finite.deformation_gradient.determinant() : 1.0);
+        s += from_mandel(d->old_stress) * dv;
+        volume += dv;
+      }
   Tensor3 global;
   MPI_Allreduce(s.data(), global.data(), 9, MPI_DOUBLE, MPI_SUM, comm);
-  return global / std::pow(prm.side, 3);
+  return global / Utilities::MPI::sum(volume, comm);
 }
 
 // @sect3{The LoadingEngine interface}
@@ -879,6 +1091,7 @@ ResponseSample CubeEngine::measure()
 namespace {
 struct PointSnapshot {
   PlasticHistory history;
+  FiniteStrainHistory finite;
   Vector6 stress;
   ReturnRegion region;
   Matrix6 tangent;
@@ -903,7 +1116,7 @@ std::unique_ptr<EngineState> CubeEngine::save() const
   for (const auto &cell : m.tria.active_cell_iterators())
     if (cell->is_locally_owned())
       for (const auto &d : m.qp_data.get_data(cell))
-        s->points.push_back({d->old_history, d->old_stress, d->old_region, d->trial.tangent, d->q, d->normal});
+        s->points.push_back({d->old_history, d->old_finite, d->old_stress, d->old_region, d->trial.tangent, d->q, d->normal});
   s->time = m.time;
   s->onset_time = m.onset_time;
   s->q_min = m.q_min;
@@ -923,6 +1136,7 @@ void CubeEngine::restore(const EngineState &state)
       for (const auto &d : m.qp_data.get_data(cell)) {
         const PointSnapshot &p = s.points.at(k++);
         d->old_history = d->trial.history = p.history;
+        d->old_finite = d->trial_finite = p.finite;
         d->old_stress = d->trial.stress = p.stress;
         d->old_region = d->trial.region = p.region;
         d->trial.tangent = p.tangent;

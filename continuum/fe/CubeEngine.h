@@ -10,11 +10,14 @@
 //                        membrane, as a servo wall in the limit of fast servo).
 // The three fixed walls remove the rigid modes, so an all-stress stage is well posed.
 //
-// Equilibrium, small strain, rate-independent elastoplasticity:
-//     R(u) = int_Omega B^T sigma(eps(u); history) dV - int_Gamma_t N^T t dA = 0,
-// solved per load step by Newton-Raphson with the consistent tangent
-//     K = int_Omega B^T C_alg B dV,   K du = -R,   u <- u + alpha du,
-// where the first iteration of a step carries the increment of the prescribed wall
+// Equilibrium, rate-independent elastoplasticity, finite strain by default (`kinematics`):
+// total Lagrangian on the reference cube with F = I + Grad u, the exponential-map update of
+// continuum/models/FiniteStrain.h at every quadrature point and its spatial tangent,
+//     R(u) = int_Omega0 grad_x N : tau dV0 - F_ext(u) = 0,   K = int grad_x N : (J a) : grad_x N dV0 + K_load,
+// (deal.II step-44 is the model of the assembly); with `kinematics = small strain`
+//     R(u) = int_Omega B^T sigma(eps(u); history) dV - int_Gamma_t N^T t dA = 0,  K = int B^T C_alg B dV.
+// Each load step is solved by Newton-Raphson with the consistent tangent, K du = -R,
+// u <- u + alpha du, where the first iteration of a step carries the increment of the prescribed wall
 // displacements as inhomogeneous constraints (a tangent predictor, exact for elasticity),
 // and alpha comes from a backtracking line search on |R|. A step that does not converge in
 // `max_newton_iterations` is cut back (halved) from the last converged state; steps grow
@@ -23,12 +26,16 @@
 // convergence, so cut-backs and the engine's save()/restore() are exact.
 //
 // Response. Wall stress sigma_aa = (sum of the internal nodal forces in direction a on the
-// face x_a = L) / L^2, i.e. reaction over the INITIAL face area: the model is small-strain,
-// where force/initial area is the work-conjugate of the engineering strain and a
-// homogeneous cube then reproduces the material point exactly. Box strain eps_aa = mean
-// normal displacement of the face x_a = L over L (exact on kinematic faces, the average of
-// a possibly warped face on stress faces). Off-diagonal stress = volume average (zero up
-// to round-off between frictionless walls); off-diagonal box strain = 0.
+// face x_a = L) / (area of that face): at finite strain its CURRENT area projected on the
+// wall, int cof(F)_aa dA0, so sigma_aa is the Cauchy stress a DEM wall measures (force over
+// current wall area) and stress-axis tractions are applied per current area as well; at
+// small strain the initial area L^2, the work conjugate of the engineering strain. A
+// homogeneous cube reproduces the material point exactly either way. Box strain eps_aa =
+// mean normal displacement of the face x_a = L over L (exact on kinematic faces, the
+// average of a possibly warped face on stress faces); the engineering strain of the box,
+// whose log ln(1 + eps) the metrics read. Off-diagonal stress = the volume average of the
+// Cauchy stress over the current configuration (zero up to round-off between frictionless
+// walls); off-diagonal box strain = 0.
 //
 // Softening and localization: an imperfection (a sphere of quadrature points with reduced
 // cohesion) triggers the band, and the softening branch is regularized by the crack-band
@@ -38,6 +45,7 @@
 // recorded in the Response extras.
 #include "common/LoadingEngine.h"
 #include "continuum/driver/Materials.h"
+#include "continuum/models/FiniteStrain.h"
 
 #include <mpi.h>
 
@@ -56,6 +64,8 @@ struct CubeParameters {
   /// point by its cell average, which removes the volumetric locking of Q1 under nearly
   /// isochoric plastic flow; meant for degree 1.
   std::string volumetric_integration = "full";
+  /// finite strain (total Lagrangian, logarithmic elastic strain; the default) or small strain.
+  Kinematics kinematics = Kinematics::finite_strain;
   // Linear solver (Trilinos or PETSc, chosen when configuring; docs/continuum-fe.md).
   std::string linear_solver = "gmres";  ///< gmres | cg (symmetric tangents only) | direct
   /// amg | jacobi. amg = the AMG of the configured linear algebra (ML with Trilinos,
@@ -113,6 +123,11 @@ struct CubeStatistics {
 struct MidPlaneSample {
   std::vector<double> x, z, ux, uz, kappa;
 };
+
+/// Throws std::invalid_argument naming the parameter when `p` is out of range. The
+/// constructor calls it; so does the command line's validation of a case before anything
+/// runs (compare/cli/CaseValidation.cpp), so that `geocomp check` refuses what the cube would.
+void check_cube_parameters(const CubeParameters &p);
 
 class CubeEngine : public LoadingEngine {
 public:

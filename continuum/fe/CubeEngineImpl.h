@@ -4,6 +4,7 @@
 // Not installed; include only from continuum/fe/*.cpp.
 #include "continuum/fe/CubeEngine.h"
 #include "continuum/models/AcousticTensorScan.h"
+#include "continuum/models/FiniteStrain.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
@@ -37,15 +38,20 @@ namespace geocomp::continuum {
 
 namespace dl = dealii;
 
-/// History and trial state of one quadrature point.
+/// History and trial state of one quadrature point. Small strain: `old_history` and `trial`.
+/// Finite strain: `old_finite` and `trial_finite` carry F and b^e; `trial` then holds the
+/// Cauchy stress, the logarithmic tangent (for the localization scan), kappa and the region,
+/// so that measurement and output read one record whatever the kinematics.
 struct QuadraturePointData {
   // Converged at the end of the last committed load step.
   PlasticHistory old_history;
-  Vector6 old_stress = Vector6::Zero();
+  FiniteStrainHistory old_finite;
+  Vector6 old_stress = Vector6::Zero(); ///< Cauchy stress, Mandel
   ReturnRegion old_region = ReturnRegion::elastic;
   // Trial values of the current Newton iterate (committed on convergence); after a
   // commit, trial.tangent is the consistent tangent of the converged state.
   MaterialPointUpdate trial;
+  FiniteStrainHistory trial_finite;
   // Geometry and material of the point.
   const ConstitutiveModel *material = nullptr;
   bool weak = false;    ///< inside the imperfection
@@ -74,13 +80,22 @@ struct CubeEngine::Impl {
   /// `predictor` the inhomogeneous predictor constraints are used for the matrix rows.
   /// Returns |R_free|.
   double assemble(double t, bool matrix, bool predictor);
+  /// Per-cell parts of assemble(): the internal force and tangent of one cell, small strain
+  /// (with B-bar) or finite strain (total Lagrangian); false when a return map failed.
+  struct CellTerms;
+  bool cell_small_strain(CellTerms &terms);
+  bool cell_finite_strain(CellTerms &terms);
+  /// Wall tractions sigma*_a e_a on the faces x_a = L of stress axes, per current projected
+  /// area at finite strain (with the load stiffness when the matrix is assembled).
+  void cell_tractions(CellTerms &terms, double t);
   unsigned solve_linear(double reduction); ///< K du = rhs to a relative reduction; iterations
   void commit();
   void revert();
   void update_localization(double t);
 
   // ---- measurement
-  Vector3 wall_stresses() const;       ///< from the internal-force reactions
+  Vector3 wall_stresses() const;       ///< from the internal-force reactions, per current area
+  Vector3 face_areas() const;          ///< current areas of the faces x_a = L projected on e_a
   Vector3 face_strains() const;        ///< mean normal displacement / L
   Tensor3 volume_average_stress() const;
 
@@ -124,6 +139,7 @@ struct CubeEngine::Impl {
   std::map<MaterialVariant, std::shared_ptr<const ConstitutiveModel>> materials;
   Matrix6 elastic_tangent;
   Vector6 prestrain = Vector6::Zero(); ///< elastic strain of the initial stress
+  Matrix9 elastic_tangent_9;           ///< elastic_tangent as a full 9x9 (apex blending)
   AcousticTensorScan scan;
 
   // Control and time.

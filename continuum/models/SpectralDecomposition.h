@@ -41,4 +41,10 @@ Matrix6 isotropic_function_tangent(const Matrix3 &vectors, const Vector3 &trial_
                                    const Vector3 &stress, const Matrix3 &principal_tangent,
                                    double coincidence_tolerance = 1e-9);
 
+/// The same tangent with the spin coefficients given: `spin(i, j)` (i < j) is r_ij. For a
+/// function whose ratio (f_i - f_j)/(x_i - x_j) has a closed form that stays accurate as
+/// x_i -> x_j (the logarithm of LogarithmicStrain.h), the caller computes it itself.
+Matrix6 isotropic_function_tangent(const Matrix3 &vectors, const Matrix3 &principal_tangent,
+                                   const Matrix3 &spin);
+
 } // namespace geocomp::continuum

@@ -2,6 +2,9 @@
 // Loading programs and materials shared by the continuum-engine tests. Every number a
 // test checks is computed from the closed forms written next to it.
 #include "common/LoadingProgram.h"
+#include "common/Response.h"
+
+#include <gtest/gtest.h>
 #include "continuum/models/MohrCoulombReturnMap.h"
 
 #include <cmath>
@@ -49,6 +52,48 @@ inline MohrCoulombParameters perfect_mohr_coulomb(double E, double nu, double c,
   m.friction_angle = PiecewiseLinear(phi);
   m.dilatancy_angle = PiecewiseLinear(psi);
   return m;
+}
+
+/// S0's isochoric shear (eq. 3, lambda = 0) from the start of the program, sampled every
+/// `interval` until gamma_max >= `gamma`.
+inline LoadingProgram s0_isochoric(double gamma, double interval)
+{
+  LoadingProgram program;
+  program.sample_interval = interval;
+  Stage shear;
+  shear.name = "isochoric";
+  shear.isochoric = true;
+  shear.isochoric_rate = 0.05;
+  shear.stop_any = {parse_condition("gamma_max >= " + std::to_string(gamma), "test")};
+  shear.max_duration = 100.0;
+  program.stages = {shear};
+  program.validate();
+  return program;
+}
+
+/// Perfect Mohr-Coulomb with psi = 0 from the initial stress -p under s0_isochoric: at
+/// finite strain det F = 1 and the flow is isochoric, so every sample keeps the mean stress
+/// -p, and once plastic tau_max = c cos(phi) + p sin(phi) (to `tolerance`, relative).
+/// Returns the number of plastic samples (state flag or plastic fraction > 0).
+inline int expect_isochoric_plateau(const Response &r, double p, double c, double phi, double tolerance)
+{
+  const int flag = r.extra_index("state_flag") >= 0 ? r.extra_index("state_flag") : r.extra_index("plastic_fraction");
+  const double tau_yield = c * std::cos(phi) + p * std::sin(phi);
+  int plastic = 0;
+  for (const auto &s : r.samples) {
+    if (!(std::abs(mean_stress(s.stress) / -p - 1.0) <= tolerance))
+      ADD_FAILURE() << r.engine << ": mean stress " << mean_stress(s.stress) << " at t = " << s.time;
+    if (s.extras[flag] == 0.0) {
+      if (!(tau_max(s.stress) <= tau_yield * (1.0 + tolerance)))
+        ADD_FAILURE() << r.engine << ": elastic sample above yield at t = " << s.time;
+      continue;
+    }
+    ++plastic;
+    if (!(std::abs(tau_max(s.stress) / tau_yield - 1.0) <= tolerance))
+      ADD_FAILURE() << r.engine << ": tau_max / (c cos phi + p sin phi) = " << tau_max(s.stress) / tau_yield
+                    << " at t = " << s.time;
+  }
+  return plastic;
 }
 
 } // namespace geocomp::continuum::testing

@@ -4,6 +4,7 @@
 
 #include "common/ProgramRunner.h"
 #include "continuum/driver/MaterialPointEngine.h"
+#include "continuum/models/FiniteStrain.h"
 #include "continuum/models/MohrCoulombModel.h"
 
 #include <Eigen/Eigenvalues>
@@ -54,25 +55,34 @@ LoadingProgram triaxial_program()
 
 TEST(MaterialPointEngine, TriaxialPeakEqualsMohrCoulombClosedForm)
 {
-  MaterialPointEngine engine(perfect_material());
-  const LoadingProgram program = triaxial_program();
-  const Response r = ProgramRunner(program, engine).run();
+  for (const Kinematics kinematics : {Kinematics::finite_strain, Kinematics::small_strain}) {
+    MaterialPointParameters prm;
+    prm.kinematics = kinematics;
+    MaterialPointEngine engine(perfect_material(), prm);
+    const LoadingProgram program = triaxial_program();
+    const Response r = ProgramRunner(program, engine).run();
 
-  // Compression positive: sigma_1 = sigma_3 N_phi + 2 c sqrt(N_phi); tension positive
-  // sigma_zz = -(p N_phi + 2 c sqrt(N_phi)).
-  const double peak = -(p * N_of(phi) + 2.0 * c * std::sqrt(N_of(phi)));
-  double lowest = 0.0;
-  for (const auto &s : r.samples)
-    lowest = std::min(lowest, s.stress(2, 2));
-  EXPECT_NEAR(lowest / peak, 1.0, 1e-8);
-  // It reached the peak plateau well before the end, on the compression corner.
-  EXPECT_NEAR(r.samples.back().stress(2, 2) / peak, 1.0, 1e-8);
-  // Plastic, and symmetric: the corner sigma_xx = sigma_yy leaves the lateral split
-  // indeterminate, the engine must keep eps_xx = eps_yy.
-  EXPECT_NE(r.samples.back().extras[r.extra_index("state_flag")], 0.0);
-  for (const auto &s : r.samples)
-    EXPECT_NEAR(s.strain(0, 0), s.strain(1, 1), 1e-14) << "t = " << s.time;
-  EXPECT_EQ(r.stage_end_reasons[1], program.stages[1].stop_any[0].text);
+    // Compression positive: sigma_1 = sigma_3 N_phi + 2 c sqrt(N_phi). At finite strain the
+    // surface is on the Kirchhoff stress tau = J sigma, so sigma_1 = sigma_3 N_phi +
+    // 2 (c / J) sqrt(N_phi); tension positive sigma_zz = -(p N_phi + 2 (c / J) sqrt(N_phi)).
+    auto peak = [&](const ResponseSample &s) {
+      const double J = kinematics == Kinematics::finite_strain ? volumetric_strain(s.strain) + 1.0 : 1.0;
+      return -(p * N_of(phi) + 2.0 * (c / J) * std::sqrt(N_of(phi)));
+    };
+    const ResponseSample *lowest = &r.samples.front();
+    for (const auto &s : r.samples)
+      if (s.stress(2, 2) < lowest->stress(2, 2))
+        lowest = &s;
+    EXPECT_NEAR(lowest->stress(2, 2) / peak(*lowest), 1.0, 1e-8) << to_string(kinematics);
+    // It reached the peak plateau well before the end, on the compression corner.
+    EXPECT_NEAR(r.samples.back().stress(2, 2) / peak(r.samples.back()), 1.0, 1e-8) << to_string(kinematics);
+    // Plastic, and symmetric: the corner sigma_xx = sigma_yy leaves the lateral split
+    // indeterminate, the engine must keep eps_xx = eps_yy.
+    EXPECT_NE(r.samples.back().extras[r.extra_index("state_flag")], 0.0);
+    for (const auto &s : r.samples)
+      EXPECT_NEAR(s.strain(0, 0), s.strain(1, 1), 1e-14) << "t = " << s.time;
+    EXPECT_EQ(r.stage_end_reasons[1], program.stages[1].stop_any[0].text);
+  }
 }
 
 TEST(MaterialPointEngine, EverySampleOfAFlowingPointIsFlaggedPlastic)
@@ -113,14 +123,25 @@ TEST(MaterialPointEngine, StressAxesHoldTheirTargets)
 
 TEST(MaterialPointEngine, ElasticConsolidationMatchesBulkModulus)
 {
-  MaterialPointEngine engine(perfect_material());
-  LoadingProgram program;
-  program.sample_interval = 0.1;
-  program.stages = {isotropic_stage(p, 0.5)};
-  const Response r = ProgramRunner(program, engine).run();
+  // Small strain: 3 K eps = -p. Finite strain (Hencky): tau = 3 K ln(1 + eps) and
+  // sigma = tau / J with J = (1 + eps)^3, i.e. 3 K ln(1 + eps) / (1 + eps)^3 = -p.
   const double K = E / (3.0 * (1.0 - 2.0 * nu));
-  for (int a = 0; a < 3; ++a)
-    EXPECT_NEAR(r.samples.back().strain(a, a) / (-p / (3.0 * K)), 1.0, 1e-10);
+  for (const Kinematics kinematics : {Kinematics::finite_strain, Kinematics::small_strain}) {
+    MaterialPointParameters prm;
+    prm.kinematics = kinematics;
+    MaterialPointEngine engine(perfect_material(), prm);
+    LoadingProgram program;
+    program.sample_interval = 0.1;
+    program.stages = {isotropic_stage(p, 0.5)};
+    const Response r = ProgramRunner(program, engine).run();
+    for (int a = 0; a < 3; ++a) {
+      const double e = r.samples.back().strain(a, a);
+      if (kinematics == Kinematics::small_strain)
+        EXPECT_NEAR(e / (-p / (3.0 * K)), 1.0, 1e-10);
+      else
+        EXPECT_NEAR(3.0 * K * std::log1p(e) / std::pow(1.0 + e, 3) / -p, 1.0, 1e-10);
+    }
+  }
 }
 
 TEST(MaterialPointEngine, IsochoricProgramKeepsTheVolumeAndReachesItsStop)
@@ -144,40 +165,83 @@ TEST(MaterialPointEngine, IsochoricProgramKeepsTheVolumeAndReachesItsStop)
   EXPECT_LT(mean_stress(stage2.back()->stress), -1.05 * p);
 }
 
-TEST(MaterialPointEngine, IsochoricPeakEqualsMohrCoulombClosedForm)
+TEST(MaterialPointEngine, IsochoricPeakEqualsMohrCoulombClosedFormAtFiniteStrain)
 {
   // S0's isochoric shear (eq. 3, lambda = 0) of a perfectly plastic Mohr-Coulomb point
-  // without dilatancy. Elastic path: deps = (e, 0, -e) keeps p, so yield comes at
-  // tau = (sigma_1 - sigma_3)/2 = c cos(phi) + p sin(phi). Plastic flow with psi = 0 is
-  // isochoric and lies in the (1, 3) plane, so the point then stays on the main plane of
-  // the surface, tau = c cos(phi) - (sigma_1 + sigma_3)/2 sin(phi) (tension positive),
-  // with sigma_2 strictly between: the closed form of the isochoric peak in terms of the
-  // mean of the extreme stresses, which drifts only by the second-order volume change
-  // of the imposed box (det(I + eps) = 1, not tr(eps) = 0).
-  MaterialPointEngine engine(std::make_shared<MohrCoulombModel>(perfect_mohr_coulomb(E, nu, c, phi, 0.0)));
-  const Response r = ProgramRunner(isochoric_program(0.05, "gamma_max >= 0.02"), engine).run();
-  const double tau_yield = c * std::cos(phi) + p * std::sin(phi);
-  int plastic = 0;
-  double tau_peak = 0.0;
+  // without dilatancy, from the initial stress -p, to gamma_max = 30 %. det F = 1 on the
+  // whole path and psi = 0 flow is isochoric, so tr(ln V^e) and the mean stress stay at -p;
+  // yield comes at tau = (sigma_1 - sigma_3)/2 = c cos(phi) + p sin(phi) and the point stays
+  // on that plateau (sigma_2 strictly between the extremes).
+  MaterialPointParameters prm;
+  prm.initial_stress = -p;
+  MaterialPointEngine engine(std::make_shared<MohrCoulombModel>(perfect_mohr_coulomb(E, nu, c, phi, 0.0)), prm);
+  const Response r = ProgramRunner(s0_isochoric(0.3, 0.05), engine).run();
+  ASSERT_EQ(r.stage_end_reasons[0], "gamma_max >= 0.300000");
+  EXPECT_GT(expect_isochoric_plateau(r, p, c, phi, 1e-8), 50);
   for (const auto &s : r.samples) {
-    if (s.stage != 1)
-      continue;
-    const Eigen::Vector3d sig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(s.stress).eigenvalues(); // ascending
-    const double tau = 0.5 * (sig[2] - sig[0]);
-    tau_peak = std::max(tau_peak, tau);
-    if (s.extras[r.extra_index("state_flag")] == 0.0) {
-      EXPECT_LT(tau, tau_yield * (1.0 + 1e-12)) << "elastic sample above the yield closed form, t = " << s.time;
-      continue;
+    EXPECT_NEAR(volumetric_strain(s.strain), 0.0, 1e-14) << "t = " << s.time;
+    const Vector3 sig = principal_values(s.stress); // ascending
+    if (s.extras[r.extra_index("state_flag")] != 0.0) {
+      EXPECT_GT(sig[1], sig[0] + 1e-3 * tau_max(s.stress));
+      EXPECT_LT(sig[1], sig[2] - 1e-3 * tau_max(s.stress));
     }
-    ++plastic;
-    EXPECT_NEAR(tau / (c * std::cos(phi) - 0.5 * (sig[2] + sig[0]) * std::sin(phi)), 1.0, 1e-10) << "t = " << s.time;
-    EXPECT_GT(sig[1], sig[0] + 1e-3 * tau);
-    EXPECT_LT(sig[1], sig[2] - 1e-3 * tau);
   }
-  EXPECT_GT(plastic, 5);
-  // The peak is the yield closed form up to the volume drift (gamma_max <= 2 %: ~1e-3).
-  EXPECT_NEAR(tau_peak / tau_yield, 1.0, 5e-3);
-  std::printf("[isochoric] %d plastic samples, tau_peak / (c cos phi + p sin phi) = %.6f\n", plastic, tau_peak / tau_yield);
+}
+
+TEST(MaterialPointEngine, FiniteStrainPointEqualsTheExponentialMapOnTheBoxDeformationGradient)
+{
+  // The point's update on ln(1 + eps) (the box never rotates) against the general update of
+  // FiniteStrain.h driven by F = diag(1 + eps) at the same increments: a dilatant point in
+  // S0's isochoric program with lambda = 0.5, one increment per sample.
+  MaterialPointParameters prm;
+  prm.initial_stress = -p;
+  prm.substeps_per_advance = 1;
+  auto model = std::make_shared<MohrCoulombModel>(perfect_mohr_coulomb(E, nu, c, phi, psi));
+  MaterialPointEngine engine(model, prm);
+  LoadingProgram program = s0_isochoric(0.2, 0.02);
+  program.stages[0].lambda = 0.5;
+  const Response r = ProgramRunner(program, engine).run();
+  FiniteStrainHistory h = initial_finite_strain_history(*model, -p * Matrix3::Identity());
+  int plastic = 0;
+  for (const auto &s : r.samples) {
+    const FiniteStrainUpdate u = finite_strain_update(*model, Matrix3::Identity() + s.strain, h);
+    h = u.history;
+    plastic += u.region != ReturnRegion::elastic;
+    EXPECT_LT((u.cauchy_stress() - s.stress).cwiseAbs().maxCoeff(), 1e-9 * p) << "t = " << s.time;
+  }
+  EXPECT_GT(plastic, 50);
+}
+
+TEST(MaterialPointEngine, SmallStrainIsochoricShearDriftsFromTheClosedFormAsTheVolumeTermPredicts)
+{
+  // The same shear at small strain: the imposed box has det(I + eps) = 1 but tr(eps) =
+  // e^2/(1 - e) > 0, so the mean stress falls by K tr(eps) and the plateau tau = c cos(phi) -
+  // (sigma_1 + sigma_3)/2 sin(phi) follows it down (tension positive) - the bias the finite
+  // strain formulation removes.
+  MaterialPointParameters prm;
+  prm.initial_stress = -p;
+  prm.kinematics = Kinematics::small_strain;
+  MaterialPointEngine engine(std::make_shared<MohrCoulombModel>(perfect_mohr_coulomb(E, nu, c, phi, 0.0)), prm);
+  const LoadingProgram program = s0_isochoric(0.05, 0.05);
+  const Response r = ProgramRunner(program, engine).run();
+  const double K = E / (3.0 * (1.0 - 2.0 * nu));
+  int plastic = 0;
+  for (const auto &s : r.samples) {
+    // tr(eps) is exactly the small-strain volume change the model sees.
+    if (s.time == 0.0)
+      continue;
+    EXPECT_NEAR((mean_stress(s.stress) + p) / (K * s.strain.trace()), 1.0, 1e-8) << "t = " << s.time;
+    if (s.extras[r.extra_index("state_flag")] == 0.0)
+      continue;
+    ++plastic;
+    const Vector3 sig = principal_values(s.stress);
+    EXPECT_NEAR(tau_max(s.stress) / (c * std::cos(phi) - 0.5 * (sig[2] + sig[0]) * std::sin(phi)), 1.0, 1e-10);
+  }
+  EXPECT_GE(plastic, 8);
+  // By gamma_max = 5 % (e ~ 2.5 %) the mean stress has lost K e^2/(1 - e): 43 % of p here
+  // (E / p = 1000); at gamma_max ~ 8 % this point reaches the apex in tension.
+  const double e = -r.samples.back().strain(0, 0);
+  EXPECT_NEAR((mean_stress(r.samples.back().stress) + p) / (K * e * e / (1.0 - e)), 1.0, 1e-6);
 }
 
 TEST(MaterialPointEngine, UnloadingBranchLeavesTheMainPathUnchanged)
