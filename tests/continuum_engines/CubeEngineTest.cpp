@@ -162,6 +162,23 @@ TEST(CubeEngine, ElasticUniaxialStrainMatchesOedometricModulus)
   }
 }
 
+TEST(CubeEngine, FirstSampleCarriesTheInitialStress)
+{
+  // The walls hold the initial isotropic stress before any load step (the first sample
+  // once reported zero wall stress).
+  for (const Kinematics kinematics : {Kinematics::finite_strain, Kinematics::small_strain}) {
+    CubeParameters cp = small_cube(2);
+    cp.kinematics = kinematics;
+    cp.initial_stress = -p;
+    CubeEngine engine(cp, elastic(), MPI_COMM_WORLD);
+    const Response r = ProgramRunner(s0_isochoric(0.01, 0.05), engine).run();
+    ASSERT_GT(r.samples.size(), 2u);
+    EXPECT_EQ(r.samples.front().time, 0.0);
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(r.samples.front().stress(a, a) / -p, 1.0, 1e-12) << to_string(kinematics) << " axis " << a;
+  }
+}
+
 TEST(CubeEngine, MidPlaneShowsTheHomogeneousDisplacementAndPlasticStrain)
 {
   // Homogeneous deformation of the cube [0, L]^3 with the lower faces held: on the plane
