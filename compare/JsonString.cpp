@@ -1,24 +1,13 @@
+// See JsonString.h.
 #include "compare/JsonString.h"
 
-#include <cstdio>
+#include <nlohmann/json.hpp>
 
 namespace geocomp::compare {
 
 std::string json_string(const std::string &s)
 {
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else
-      out += static_cast<char>(c);
-  }
-  return out + "\"";
+  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 } // namespace geocomp::compare

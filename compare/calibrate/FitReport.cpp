@@ -1,7 +1,9 @@
 #include "compare/calibrate/FitReport.h"
 
 #include "common/AtomicFile.h"
+#include "common/Subprocess.h"
 #include "common/Tensor.h"
+#include "compare/GnuplotString.h"
 #include "compare/JsonString.h"
 #include "compare/Metrics.h"
 
@@ -152,8 +154,9 @@ bool write_plots(const fs::path &dir, const CalibrationResult &r, const std::vec
     // Folder and file (results/<case>/dem.h5 -> <case>/dem.h5): the file names alone repeat.
     const fs::path file(targets[k].name);
     const std::string name = (file.parent_path().filename() / file.filename()).string();
-    gp << "set output 'fit" << id << ".png'\nset title 'target " << k + 1 << " (" << name
-       << ") and the calibrated material point' noenhanced\nset xlabel '" << x << "'\nset ylabel '" << (axial ? "q" : "q, -p") << " [MPa]'\n"
+    const std::string target = "target " + std::to_string(k + 1) + " (" + name + ")";
+    gp << "set output 'fit" << id << ".png'\nset title "
+       << compare::gnuplot_quoted(target + " and the calibrated material point") << " noenhanced\nset xlabel '" << x << "'\nset ylabel '" << (axial ? "q" : "q, -p") << " [MPa]'\n"
        << (axial ? "set y2label '{/Symbol e}_v [%] (dilation +)'\nset y2tics\n" : "")
        << "plot 'data/target" << id << ".dat' u 1:2 w p pt 7 ps 0.5 lc rgb '#2ca02c' t 'target q', "
        << "'data/fit" << id << ".dat' u 1:2 w l lw 2 lc rgb '#d62728' t 'fit q'";
@@ -166,8 +169,8 @@ bool write_plots(const fs::path &dir, const CalibrationResult &r, const std::vec
     gp << "\n";
     if (axial)
       gp << "unset y2tics\nunset y2label\n";
-    gp << "set output 'residuals" << id << ".png'\nset title 'residuals along target " << k + 1 << " (" << name
-       << "), model - target' noenhanced\nset ylabel 'residual [% of scale]'\nplot ";
+    gp << "set output 'residuals" << id << ".png'\nset title "
+       << compare::gnuplot_quoted("residuals along " + target + ", model - target") << " noenhanced\nset ylabel 'residual [% of scale]'\nplot ";
     const auto &rows = r.residual_summary[k];
     for (std::size_t j = 0; j < rows.size(); ++j)
       gp << (j ? ", " : "") << "'data/residuals" << id << ".dat' u 1:" << j + 2 << " w lp ps 0.4 "
@@ -176,8 +179,8 @@ bool write_plots(const fs::path &dir, const CalibrationResult &r, const std::vec
     gp << "\n";
   }
   write_text(dir / "fit.gp", gp.str());
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot fit.gp > gnuplot.log 2>&1";
-  return std::system(cmd.c_str()) == 0;
+  // No shell: the folder arrives as it is, whatever characters it holds.
+  return run_subprocess({"gnuplot", "fit.gp"}, {dir, dir / "gnuplot.log", dir / "gnuplot.log"}).succeeded();
 }
 
 std::string fit_html(const CalibrationResult &r, const std::vector<FitTarget> &targets, const std::string &case_file,

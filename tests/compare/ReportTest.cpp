@@ -2,6 +2,7 @@
 // with a strict little JSON reader), plots exist as PNGs when gnuplot is there, and the
 // folder appears whole (atomic) with or without gnuplot.
 #include "compare/Report.h"
+#include "common/Subprocess.h"
 #include "Synthetic.h"
 
 #include <gtest/gtest.h>
@@ -264,7 +265,7 @@ int check_html_against_json(const fs::path &dir)
 
 TEST(Report, HtmlNumbersEqualMetricsJsonAndPlotsArePngs)
 {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+  if (!geocomp::program_available("gnuplot"))
     GTEST_SKIP() << "gnuplot not installed";
   const ReportInput in = sample_input();
   const fs::path dir = scratch("report");
