@@ -129,8 +129,10 @@ CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Rea
     }
     r.fail("calibration/bounds", "'" + item + "' is not 'name: lower upper' with lower < upper");
   }
-  if (p.output_file.empty())
-    r.fail("calibration/output file", "expected a file name");
+  // Written inside <output>/calibration/: a name, not a path that leads elsewhere.
+  if (p.output_file.empty() || p.output_file == "." || p.output_file == ".." ||
+      p.output_file.find('/') != std::string::npos)
+    r.fail("calibration/output file", "'" + p.output_file + "' is not a file name: expected a name without a folder");
   return p;
 }
 

@@ -1,7 +1,9 @@
 // `geocomp calibrate <case>`: fit the continuum section to the case's target curves
 // (compare/calibrate, docs/calibration.md), optionally verified on the FE cube.
+#include "CaseValidation.h"
 #include "Commands.h"
 #include "Engines.h"
+#include "OutputFolderLock.h"
 
 #include "common/ProgramRunner.h"
 #include "compare/calibrate/Calibration.h"
@@ -81,7 +83,8 @@ Command calibrate_command()
     CaseDescription c;
     std::vector<FitTarget> targets;
     try {
-      c = read_case(a.positional[0]);
+      c = read_valid_case(a.positional[0], a.has("verify") ? std::vector<std::string>{"material-point", "continuum"}
+                                                           : std::vector<std::string>{"material-point"});
       if (c.continuum.model == "nikolaevsky")
         throw CaseError(c.file, "continuum/model",
                         "calibrate fits the Mohr-Coulomb parameters (E, nu, cohesion, friction, dilatancy, also "
@@ -93,6 +96,8 @@ Command calibrate_command()
         if (!fs::exists(f))
           throw CaseError(c.file, "calibration/targets",
                           "'" + f + "' does not exist (run the target case first, e.g. `geocomp dem <case>`)");
+        if (!fs::is_regular_file(f))
+          throw CaseError(c.file, "calibration/targets", "'" + f + "' is not a regular file: expected a results file (.h5)");
         try {
           targets.push_back(load_target(f, c.calibration.weights.empty() ? 1.0 : c.calibration.weights[k]));
         } catch (const CalibrationError &e) {
@@ -103,7 +108,15 @@ Command calibrate_command()
       std::cerr << "error: " << e.what() << "\n";
       return static_cast<int>(bad_input);
     }
-    const fs::path dir = (a.has("output") ? fs::path(a.get("output")) : fs::path(c.output.directory)) / "calibration";
+    const fs::path out = a.has("output") ? fs::path(a.get("output")) : fs::path(c.output.directory);
+    const fs::path dir = out / "calibration";
+    std::unique_ptr<OutputFolderLock> lock;
+    try {
+      lock = std::make_unique<OutputFolderLock>(out, c.file, a.has("output") ? "--output" : "output/directory");
+    } catch (const CaseError &e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return static_cast<int>(bad_input);
+    }
     try {
       ContinuumParameters start = c.continuum;
       std::vector<std::string> notes;

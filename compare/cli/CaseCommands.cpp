@@ -1,4 +1,5 @@
 // `geocomp check` and `geocomp print-parameters`: the case file, without running anything.
+#include "CaseValidation.h"
 #include "Commands.h"
 
 #include "common/case/CaseParameters.h"
@@ -32,14 +33,17 @@ Command check_command()
   c.summary = "validate a case file (every section, the whole loading program) without running";
   c.usage = "usage: geocomp check <case.prm|case.json>\n\n"
             "Reads and validates the case file: every section, every parameter, the whole loading\n"
-            "program. Prints a summary and exits 0, or prints one message naming the file, the\n"
-            "parameter and what was expected, and exits 2. Writes nothing.\n";
+            "program, and for each engine it names the checks that engine runs before it starts\n"
+            "(the DEM's specimen source, text file or store; the continuum's material and mesh) -\n"
+            "a case check accepts is one every engine it names accepts. Prints a summary and exits\n"
+            "0, or prints one message naming the file, the parameter and what was expected, and\n"
+            "exits 2. Writes nothing.\n";
   c.run = [](const std::vector<std::string> &args) {
     const Arguments a = Arguments::parse(args, {}, {});
     if (a.positional.size() != 1)
       throw UsageError("expected exactly one case file");
     try {
-      const CaseDescription d = read_case(a.positional[0]);
+      const CaseDescription d = read_valid_case(a.positional[0]);
       std::cout << d.file << ": ok\n  title: " << d.title << "\n  engines:";
       for (const auto &e : d.engines)
         std::cout << " " << e;

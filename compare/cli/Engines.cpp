@@ -1,4 +1,5 @@
 #include "Engines.h"
+#include "CaseValidation.h"
 
 #include "continuum/driver/CaseMaterial.h"
 #include "continuum/driver/MaterialPointEngine.h"
@@ -106,38 +107,46 @@ const std::vector<std::string> &engine_names()
 
 std::string results_file(const std::string &engine) { return engine + ".h5"; }
 
+continuum::MaterialPointParameters material_point_parameters(const CaseDescription &c)
+{
+  continuum::MaterialPointParameters p;
+  p.initial_stress = -c.specimen.isotropic_pressure; // tension positive
+  p.substeps_per_advance = c.continuum.point_substeps;
+  return p;
+}
+
+continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::string &output_dir)
+{
+  continuum::CubeParameters p;
+  p.side = box_size(c.specimen);
+  p.cells_per_side = c.continuum.cells_per_edge;
+  p.degree = c.continuum.degree;
+  p.initial_stress = -c.specimen.isotropic_pressure; // tension positive
+  p.imperfection_radius = c.continuum.imperfection_radius;
+  p.imperfection_cohesion_factor = c.continuum.imperfection_factor;
+  for (int a = 0; a < 3; ++a)
+    p.imperfection_centre[a] = c.continuum.imperfection_centre[a] * p.side;
+  p.regularization = c.continuum.regularization;
+  p.volumetric_integration = c.continuum.volumetric_integration;
+  p.linear_solver = c.continuum.linear_solver;
+  p.preconditioner = c.continuum.preconditioner;
+  p.near_null_space = c.continuum.near_null_space;
+  p.newton_tolerance = c.continuum.newton_tolerance;
+  p.steps_per_advance = c.continuum.load_steps_per_sample;
+  p.band_reference_width = c.continuum.reference_element_size;
+  if (c.output.fields)
+    p.output_directory = output_dir + "/continuum-fields";
+  return p;
+}
+
 std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDescription &c,
                                            const std::string &output_dir, MPI_Comm communicator)
 {
-  const double initial_stress = -c.specimen.isotropic_pressure; // tension positive
-  if (name == "material-point") {
-    continuum::MaterialPointParameters p;
-    p.initial_stress = initial_stress;
-    p.substeps_per_advance = c.continuum.point_substeps;
-    return std::make_unique<continuum::MaterialPointEngine>(continuum_material(c), p);
-  }
-  if (name == "continuum") {
-    continuum::CubeParameters p;
-    p.side = box_size(c.specimen);
-    p.cells_per_side = c.continuum.cells_per_edge;
-    p.degree = c.continuum.degree;
-    p.initial_stress = initial_stress;
-    p.imperfection_radius = c.continuum.imperfection_radius;
-    p.imperfection_cohesion_factor = c.continuum.imperfection_factor;
-    for (int a = 0; a < 3; ++a)
-      p.imperfection_centre[a] = c.continuum.imperfection_centre[a] * p.side;
-    p.regularization = c.continuum.regularization;
-    p.volumetric_integration = c.continuum.volumetric_integration;
-    p.linear_solver = c.continuum.linear_solver;
-    p.preconditioner = c.continuum.preconditioner;
-    p.near_null_space = c.continuum.near_null_space;
-    p.newton_tolerance = c.continuum.newton_tolerance;
-    p.steps_per_advance = c.continuum.load_steps_per_sample;
-    p.band_reference_width = c.continuum.reference_element_size;
-    if (c.output.fields)
-      p.output_directory = output_dir + "/continuum-fields";
-    return std::make_unique<continuum::CubeEngine>(p, continuum_material(c), communicator);
-  }
+  validate_engine(name, c);
+  if (name == "material-point")
+    return std::make_unique<continuum::MaterialPointEngine>(continuum_material(c), material_point_parameters(c));
+  if (name == "continuum")
+    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir), continuum_material(c), communicator);
   if (name == "dem")
     return make_dem_engine(c, output_dir);
   throw CaseError(c.file, "engines", "the '" + name + "' engine is not available in this build");

@@ -4,6 +4,8 @@
 #include "common/LoadingEngine.h"
 #include "common/case/CaseParameters.h"
 #include "continuum/driver/Materials.h"
+#include "continuum/driver/MaterialPointEngine.h"
+#include "continuum/fe/CubeEngine.h"
 
 #include <mpi.h>
 
@@ -17,12 +19,18 @@ const std::vector<std::string> &engine_names();
 
 /// A ready engine for `name` ("material-point", "continuum", "dem"), in the state at the
 /// start of the program (consolidated to the case's isotropic pressure). Throws CaseError
-/// for inconsistent parameters. `output_dir` receives the engine's field output.
+/// for inconsistent parameters, all of them from validate_engine() (CaseValidation.h),
+/// which it calls first. `output_dir` receives the engine's field output.
 std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDescription &c,
                                            const std::string &output_dir, MPI_Comm communicator = MPI_COMM_WORLD);
 
 /// The continuum material of a case (Mohr-Coulomb tables in radians; throws CaseError).
 continuum::MaterialParameters continuum_material(const CaseDescription &c);
+
+/// The engines' own parameters as make_engine() builds them from a case (the validation
+/// builds the same ones and checks them, CaseValidation.h).
+continuum::MaterialPointParameters material_point_parameters(const CaseDescription &c);
+continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::string &output_dir);
 
 /// File name of an engine's results inside the output folder.
 std::string results_file(const std::string &engine);

@@ -1,4 +1,5 @@
 // `geocomp pack`: builds a case's specimen (S0 radius growth + consolidation) into a core store.
+#include "CaseValidation.h"
 #include "Commands.h"
 
 #include "common/case/CaseParameters.h"
@@ -34,10 +35,12 @@ Command pack_command()
     const Arguments a = Arguments::parse(args, {"store", "name"}, {});
     if (a.positional.size() != 1)
       throw UsageError("expected exactly one case file");
-    const CaseDescription d = read_case(a.positional[0]); // CaseError -> exit 2 in main
+    // CaseError -> exit 2 in main; a store source is refused below, before it is validated.
+    const CaseDescription d = read_case(a.positional[0]);
     if (d.specimen.source == "store")
       throw CaseError(d.file, "specimen/source",
                       "pack prepares a specimen: expected generate or text, not store (the store is where it goes)");
+    validate_engines(d, {"dem"});
     const fs::path store = a.has("store") ? fs::path(a.get("store")) : fs::path(d.specimen.store_file);
     if (store.empty())
       throw CaseError(d.file, "specimen/store file", "no store to pack into: set it or pass --store FILE");

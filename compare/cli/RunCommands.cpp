@@ -1,8 +1,10 @@
 // `geocomp material-point|continuum|dem <case>` run one engine; `geocomp pair <case>` runs
 // every engine the case names (reusing up-to-date results), compares and reports;
 // `geocomp compare <dir>` and `geocomp report <dir>` work on existing results.
+#include "CaseValidation.h"
 #include "Commands.h"
 #include "Engines.h"
+#include "OutputFolderLock.h"
 #include "Progress.h"
 
 #include "common/ProgramCheckpoint.h"
@@ -373,19 +375,30 @@ int write_and_say(const compare::ReportInput &in, const fs::path &dir)
 struct RunOptions {
   CaseDescription c;
   fs::path dir;
+  std::string dir_given_as; ///< "output/directory" or "--output", for messages
   bool reuse = true;
 };
 
-RunOptions parse_run(const std::vector<std::string> &args)
+/// The case, validated for its engines and `engine` (the one a command runs) before
+/// anything runs, and where its results go.
+RunOptions parse_run(const std::vector<std::string> &args, const std::vector<std::string> &engine = {})
 {
   const Arguments a = Arguments::parse(args, {"output"}, {"force"});
   if (a.positional.size() != 1)
     throw UsageError("expected exactly one case file");
   RunOptions o;
-  o.c = read_case(a.positional[0]);
+  o.c = read_valid_case(a.positional[0], engine);
   o.dir = a.has("output") ? fs::path(a.get("output")) : fs::path(o.c.output.directory);
+  o.dir_given_as = a.has("output") ? "--output" : "output/directory";
   o.reuse = !a.has("force");
   return o;
+}
+
+/// The output folder of a run, locked for as long as the result lives (OutputFolderLock).
+std::unique_ptr<OutputFolderLock> lock_output(const RunOptions &o)
+{
+  ensure_mpi();
+  return lock_for_run(o.dir, o.c.file, o.dir_given_as, engine_comm);
 }
 
 /// Runs `body`, mapping failures onto exit codes: bad input 2, run failure 1.
@@ -415,8 +428,9 @@ Command engine_command(const std::string &engine, const std::string &summary, co
             "output directory; results made from the same case text by the same build are reused\n"
             "unless --force.\n";
   c.run = [engine](const std::vector<std::string> &args) {
-    RunOptions o = parse_run(args);
+    RunOptions o = parse_run(args, {engine});
     return guarded([&] {
+      const auto lock = lock_output(o);
       run_engine(engine, o.c, o.dir, o.reuse);
       return static_cast<int>(ok);
     });
@@ -464,7 +478,10 @@ Command pair_command()
             "and writes <output directory>/report/index.html with plots and metrics.json.\n";
   c.run = [](const std::vector<std::string> &args) {
     RunOptions o = parse_run(args);
-    return guarded([&] { return pair_case(o.c, o.dir, o.reuse); });
+    return guarded([&] {
+      const auto lock = lock_output(o);
+      return pair_case(o.c, o.dir, o.reuse);
+    });
   };
   return c;
 }
@@ -495,7 +512,7 @@ Command sweep_command()
     std::vector<CaseDescription> cases;
     try {
       for (const auto &f : a.positional)
-        cases.push_back(read_case(f));
+        cases.push_back(read_valid_case(f));
     } catch (const CaseError &e) {
       std::cerr << "error: " << e.what() << "\n";
       return static_cast<int>(bad_input);
@@ -507,7 +524,10 @@ Command sweep_command()
     engine_comm = MPI_COMM_SELF;
     int failures = 0;
     for (std::size_t k = world_rank; k < cases.size(); k += world_size) {
-      const int code = guarded([&] { return pair_case(cases[k], cases[k].output.directory, !a.has("force")); });
+      const int code = guarded([&] {
+        const OutputFolderLock lock(cases[k].output.directory, cases[k].file, "output/directory");
+        return pair_case(cases[k], cases[k].output.directory, !a.has("force"));
+      });
       std::cout << "sweep: rank " << world_rank << " case " << cases[k].file << ": "
                 << (code == ok ? "done" : "FAILED") << " -> " << cases[k].output.directory << "\n";
       failures += code != ok;
@@ -534,21 +554,26 @@ std::vector<std::pair<std::string, Response>> existing_results(const fs::path &d
   return runs;
 }
 
-/// `report` and `compare`: existing results of a case, then `action` on the comparison.
+/// `report` and `compare`: existing results of a case, then `action` on the comparison;
+/// a command that `writes` into the folder locks it first (OutputFolderLock).
 Command existing_results_command(const std::string &name, const std::string &summary, const std::string &details,
-                                 const std::function<int(const compare::ReportInput &, const fs::path &)> &action)
+                                 const std::function<int(const compare::ReportInput &, const fs::path &)> &action,
+                                 bool writes = false)
 {
   Command c;
   c.name = name;
   c.summary = summary;
   c.usage = "usage: geocomp " + name + " <case> [--output DIR]\n\n" + details;
-  c.run = [action](const std::vector<std::string> &args) {
+  c.run = [action, writes](const std::vector<std::string> &args) {
     const Arguments a = Arguments::parse(args, {"output"}, {});
     if (a.positional.size() != 1)
       throw UsageError("expected exactly one case file");
     return guarded([&] {
       const CaseDescription cd = read_case(a.positional[0]);
       const fs::path dir = a.has("output") ? fs::path(a.get("output")) : fs::path(cd.output.directory);
+      std::unique_ptr<OutputFolderLock> lock;
+      if (writes)
+        lock = std::make_unique<OutputFolderLock>(dir, cd.file, a.has("output") ? "--output" : "output/directory");
       return action(report_input(cd, existing_results(dir), dir), dir);
     });
   };
@@ -573,7 +598,8 @@ Command report_command()
   return existing_results_command("report", "compare existing results of a case and write the report",
                                   "Reads the results files of the case's engines from the output directory (nothing is\n"
                                   "run) and writes the comparison report.\n",
-                                  [](const compare::ReportInput &in, const fs::path &dir) { return write_and_say(in, dir); });
+                                  [](const compare::ReportInput &in, const fs::path &dir) { return write_and_say(in, dir); },
+                                  true);
 }
 
 } // namespace geocomp::cli

@@ -6,6 +6,7 @@
 #include "dem/specimen/SizeDistribution.h"
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <numeric>
 #include <sstream>
@@ -71,7 +72,9 @@ void set_packing_dynamics(DemSystem &s, bool aristotelian, const PreparationCrit
   }
 }
 
-PreparedSpecimen from_store(const CaseDescription &c)
+/// The case's stored specimen, refused (CaseError) when the store, the name or the
+/// conditions it was prepared under do not match the case.
+StoredSpecimen read_case_store(const CaseDescription &c)
 {
   const SpecimenParameters &s = c.specimen;
   StoredSpecimen stored;
@@ -96,6 +99,31 @@ PreparedSpecimen from_store(const CaseDescription &c)
     mismatch("contact/wall friction", stored.metadata.contact.wall_friction, c.contact.wall_friction);
   if (!same(stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure))
     mismatch("specimen/isotropic pressure", stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure);
+  return stored;
+}
+
+/// The spheres of `source = text`, refused (CaseError) when the file cannot be read or holds none.
+Packing read_case_packing(const CaseDescription &c)
+{
+  // A FIFO would block the reader and a device never end: regular files only.
+  std::error_code ec;
+  const auto status = std::filesystem::status(c.specimen.text_file, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw CaseError(c.file, "specimen/text file", "'" + c.specimen.text_file + "' is not a regular file: expected a text file of spheres");
+  Packing p;
+  try {
+    p = read_packing_file(c.specimen.text_file);
+  } catch (const PackingFileError &e) {
+    throw CaseError(c.file, "specimen/text file", e.what());
+  }
+  if (p.size() == 0)
+    throw CaseError(c.file, "specimen/text file", "'" + c.specimen.text_file + "' holds no spheres");
+  return p;
+}
+
+PreparedSpecimen from_store(const CaseDescription &c)
+{
+  StoredSpecimen stored = read_case_store(c);
   PreparedSpecimen out{std::move(stored.system), stored.record};
   out.system.set_num_threads(int(c.dem.threads)); // 0: the OpenMP default; results do not depend on it
   out.system.set_local_damping(c.dem.local_damping);
@@ -103,6 +131,23 @@ PreparedSpecimen from_store(const CaseDescription &c)
 }
 
 } // namespace
+
+void check_specimen(const CaseDescription &c)
+{
+  const SpecimenParameters &s = c.specimen;
+  if (s.source == "store") {
+    read_case_store(c);
+    return;
+  }
+  if (s.source != "generate" && s.source != "text")
+    throw CaseError(c.file, "specimen/source", "'" + s.source + "' is not one of generate, text, store");
+  if (!(s.isotropic_pressure > 0.0))
+    throw CaseError(c.file, "specimen/isotropic pressure", "must be > 0 to consolidate a specimen");
+  if (s.source == "generate")
+    growth_target(c);
+  else
+    read_case_packing(c);
+}
 
 double packing_fraction(const DemSystem &system)
 {
@@ -206,12 +251,9 @@ PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCri
                                   const PreparationProgress &progress)
 {
   const SpecimenParameters &s = c.specimen;
+  check_specimen(c);
   if (s.source == "store")
     return from_store(c);
-  if (s.source != "generate" && s.source != "text")
-    throw CaseError(c.file, "specimen/source", "'" + s.source + "' is not one of generate, text, store");
-  if (!(s.isotropic_pressure > 0.0))
-    throw CaseError(c.file, "specimen/isotropic pressure", "must be > 0 to consolidate a specimen");
 
   const auto start = std::chrono::steady_clock::now();
   PreparationRecord rec;
@@ -233,14 +275,7 @@ PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCri
     rec.frictionless_rest = g.rest.rest;
     rec.frictionless_converged = g.rest.converged;
   } else {
-    Packing p;
-    try {
-      p = read_packing_file(s.text_file);
-    } catch (const PackingFileError &e) {
-      throw CaseError(c.file, "specimen/text file", e.what());
-    }
-    if (p.size() == 0)
-      throw CaseError(c.file, "specimen/text file", "'" + s.text_file + "' holds no spheres");
+    Packing p = read_case_packing(c);
     p.density = s.density;
     rec.method = "text file " + s.text_file + " (" + dynamics + " rest) + servo consolidation";
     rec.size_distribution = "from file";

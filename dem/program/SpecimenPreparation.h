@@ -88,9 +88,18 @@ struct PreparedSpecimen
 /// Called now and then with a phase name and the DEM time spent in it.
 using PreparationProgress = PhaseProgress;
 
+/// Refuses, before anything runs, a case whose specimen prepare_specimen() would refuse,
+/// with the CaseError (file, parameter, message) it would throw: an unknown source, no
+/// isotropic pressure to consolidate to, radii and box that do not fit (growth_target), a
+/// text file that cannot be read or holds no sphere, a store or stored name that is
+/// missing or was prepared with another friction or pressure. prepare_specimen() calls it
+/// first; the command line calls it for every case that names the DEM engine, `geocomp
+/// check` included, so that what check accepts the DEM accepts.
+void check_specimen(const CaseDescription &c);
+
 /// The case's consolidated specimen. Throws CaseError (file, parameter, message) for
-/// inputs that cannot make one (unreadable text file or store, unknown stored name,
-/// inconsistent sizes), std::runtime_error when a phase does not converge.
+/// inputs that cannot make one (check_specimen), std::runtime_error when a phase does not
+/// converge.
 PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCriteria &criteria = {},
                                   const PreparationProgress &progress = {});
 

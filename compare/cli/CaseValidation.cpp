@@ -1,0 +1,50 @@
+// See CaseValidation.h: each engine's refusals, before any engine runs.
+#include "CaseValidation.h"
+
+#include "Engines.h"
+
+#include "dem/program/SpecimenPreparation.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace geocomp::cli {
+
+void validate_engine(const std::string &name, const CaseDescription &c)
+{
+  if (name == "material-point" || name == "continuum") {
+    continuum_material(c);
+    try {
+      material_point_parameters(c);
+      if (name == "continuum")
+        continuum::check_cube_parameters(cube_parameters(c, ""));
+    } catch (const std::invalid_argument &e) {
+      throw CaseError(c.file, "continuum", e.what());
+    }
+    return;
+  }
+  if (name == "dem") {
+    dem::check_specimen(c);
+    return;
+  }
+  throw CaseError(c.file, "engines", "the '" + name + "' engine is not available in this build");
+}
+
+void validate_engines(const CaseDescription &c, const std::vector<std::string> &also)
+{
+  std::vector<std::string> names = c.engines;
+  for (const auto &e : also)
+    if (std::find(names.begin(), names.end(), e) == names.end())
+      names.push_back(e);
+  for (const auto &e : names)
+    validate_engine(e, c);
+}
+
+CaseDescription read_valid_case(const std::string &path, const std::vector<std::string> &also)
+{
+  CaseDescription c = read_case(path);
+  validate_engines(c, also);
+  return c;
+}
+
+} // namespace geocomp::cli
