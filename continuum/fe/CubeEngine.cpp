@@ -109,8 +109,6 @@ void check_parameters(const CubeParameters &p)
 
 void check_cube_parameters(const CubeParameters &p) { check_parameters(p); }
 
-void check_cube_parameters(const CubeParameters &p) { check_parameters(p); }
-
 // @sect3{Setup}
 
 CubeEngine::Impl::Impl(const CubeParameters &p, std::shared_ptr<const MaterialFactory> f, MPI_Comm c)

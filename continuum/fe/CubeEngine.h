@@ -129,11 +129,6 @@ struct MidPlaneSample {
 /// runs (compare/cli/CaseValidation.cpp), so that `geocomp check` refuses what the cube would.
 void check_cube_parameters(const CubeParameters &p);
 
-/// Throws std::invalid_argument naming the parameter when `p` is out of range. The
-/// constructor calls it; so does the command line's validation of a case before anything
-/// runs (compare/cli/CaseValidation.cpp), so that `geocomp check` refuses what the cube would.
-void check_cube_parameters(const CubeParameters &p);
-
 class CubeEngine : public LoadingEngine {
 public:
   CubeEngine(const CubeParameters &parameters, std::shared_ptr<const MaterialFactory> material,
