@@ -57,6 +57,8 @@ void write_response(const std::filesystem::path &path, const Response &r, RunMet
       h5::write_attribute(m.id(), "created", now_iso());
       h5::write_attribute(m.id(), "sign_convention", std::string("tension positive (stress and strain)"));
       h5::write_attribute(m.id(), "units", std::string("SI: s, m, Pa, N"));
+      if (!meta.kinematics.empty())
+        h5::write_attribute(m.id(), "kinematics", meta.kinematics);
       h5::write(m.id(), "case_text", std::vector<std::string>{meta.case_text});
     }
     const hsize_t n = r.samples.size();
@@ -148,6 +150,8 @@ Response read_response(const std::filesystem::path &path, RunMeta *meta)
       meta->seed = static_cast<unsigned long long>(h5::read_int_attribute(m.id(), "seed"));
       meta->case_file = h5::read_string_attribute(m.id(), "case_file");
       meta->command = h5::read_string_attribute(m.id(), "command");
+      if (h5::has_attribute(m.id(), "kinematics"))
+        meta->kinematics = h5::read_string_attribute(m.id(), "kinematics");
       const auto text = h5::read_strings(m.id(), "case_text");
       meta->case_text = text.empty() ? "" : text.front();
     }

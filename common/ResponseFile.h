@@ -16,6 +16,9 @@ struct RunMeta {
   unsigned long long seed = 0;
   std::string version;     ///< filled from Version.h when empty
   std::string git_hash;    ///< filled from Version.h when empty
+  /// /meta kinematics: what the engine's strain and stress mean ("finite strain", "small
+  /// strain" for the continuum; the DEM's particles move at finite strain); empty: not written.
+  std::string kinematics;
 };
 
 void write_response(const std::filesystem::path &path, const Response &response, RunMeta meta);

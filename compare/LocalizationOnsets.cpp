@@ -6,14 +6,21 @@
 
 namespace geocomp::compare {
 
+double onset_strain(const Tensor3 &strain, const Tensor3 &reference, CurveKind kind, const AxialAxis &axial)
+{
+  const Tensor3 e = relative_log_strain(strain, reference);
+  return kind == CurveKind::AxialLateral ? axial.sense * e(axial.axis, axial.axis) : gamma_max(e);
+}
+
 std::vector<double> onset_strain_measure(const Response &r, CurveKind kind, int stage,
-                                         std::vector<std::size_t> &samples)
+                                         std::vector<std::size_t> &samples, std::optional<AxialAxis> axial)
 {
   samples.clear();
   int s = stage;
   if (s < 0)
     for (const auto &x : r.samples)
       s = std::max(s, x.stage);
+  const AxialAxis axis = kind == CurveKind::AxialLateral && !axial ? guess_axial_axis(r, s) : axial.value_or(AxialAxis{});
   std::vector<double> out;
   Tensor3 ref = Tensor3::Zero();
   bool have_ref = false;
@@ -27,8 +34,7 @@ std::vector<double> onset_strain_measure(const Response &r, CurveKind kind, int 
         ref = r.samples[previous_main].strain;
         have_ref = true;
       }
-      const Tensor3 e = x.strain - ref;
-      out.push_back(kind == CurveKind::AxialLateral ? -e(2, 2) : gamma_max(e));
+      out.push_back(onset_strain(x.strain, ref, kind, axis));
       samples.push_back(i);
     }
     previous_main = i;
@@ -55,7 +61,8 @@ double kappa_derivative(const continuum::PiecewiseLinear &f, double kappa)
 } // namespace
 
 OnsetEstimate rudnicki_rice_onset(const Response &r, const continuum::MohrCoulombParameters &mc,
-                                  continuum::DruckerPragerMatching matching, CurveKind kind, int stage)
+                                  continuum::DruckerPragerMatching matching, KappaMeasure measure, CurveKind kind,
+                                  int stage, std::optional<AxialAxis> axial)
 {
   const int k_kappa = r.extra_index("kappa");
   if (k_kappa < 0) {
@@ -65,7 +72,7 @@ OnsetEstimate rudnicki_rice_onset(const Response &r, const continuum::MohrCoulom
     return e;
   }
   std::vector<std::size_t> idx;
-  const std::vector<double> strain = onset_strain_measure(r, kind, stage, idx);
+  const std::vector<double> strain = onset_strain_measure(r, kind, stage, idx, axial);
   const double G = mc.youngs_modulus / (2 * (1 + mc.poisson_ratio));
   const int k_flag = r.extra_index("state_flag");
   std::vector<double> indicator, angle;
@@ -86,7 +93,9 @@ OnsetEstimate rudnicki_rice_onset(const Response &r, const continuum::MohrCoulom
     const double dY = m.y_over_c * kappa_derivative(mc.cohesion, kappa) + c * (m2.y_over_c - m.y_over_c) / h_k;
     const double domega = (m2.omega - m.omega) / h_k;
     const double p = mean_stress(s.stress);
-    const double h = (dY - 3 * p * domega) / shear_measure_ratio(psi); // d tau_bar / d gamma^p
+    // d tau_bar / d gamma^p: kappa is gamma^p for Drucker-Prager, f(psi) gamma^p for Mohr-Coulomb.
+    const double f = measure == KappaMeasure::mohr_coulomb ? shear_measure_ratio(psi) : 1.0;
+    const double h = (dY - 3 * p * domega) / f;
     const continuum::RudnickiRiceMaterial mat{3 * m.omega, m.lambda, mc.poisson_ratio};
     const double N = continuum::deviatoric_state(s.stress);
     const auto pred = continuum::rudnicki_rice_prediction(mat, N);
@@ -99,7 +108,8 @@ OnsetEstimate rudnicki_rice_onset(const Response &r, const continuum::MohrCoulom
   return e;
 }
 
-OnsetEstimate acoustic_tensor_onset(const Response &r, const std::string &source, CurveKind kind, int stage)
+OnsetEstimate acoustic_tensor_onset(const Response &r, const std::string &source, CurveKind kind, int stage,
+                                    std::optional<AxialAxis> axial)
 {
   const int kq = r.extra_index("localization_q"), kx = r.extra_index("localization_nx"),
             ky = r.extra_index("localization_ny"), kz = r.extra_index("localization_nz");
@@ -110,7 +120,7 @@ OnsetEstimate acoustic_tensor_onset(const Response &r, const std::string &source
     return e;
   }
   std::vector<std::size_t> idx;
-  const std::vector<double> strain = onset_strain_measure(r, kind, stage, idx);
+  const std::vector<double> strain = onset_strain_measure(r, kind, stage, idx, axial);
   std::vector<double> q, angle;
   for (std::size_t i : idx) {
     const ResponseSample &s = r.samples[i];

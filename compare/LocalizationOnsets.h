@@ -12,7 +12,11 @@
 //     h = (dY/dkappa - 3 p d omega/dkappa) / f(psi),
 // with f(psi) = gamma^p / kappa the ratio of RR's equivalent plastic shear strain
 // sqrt(2 e^p:e^p) to the Mohr-Coulomb kappa = eps1^p - eps3^p on the main plane
-// (f = 1 for psi = 0). The predicted onset is the first sample where h - h_cr <= 0.
+// (f = 1 for psi = 0). A Drucker-Prager model's kappa IS gamma^p (DruckerPragerModel.h):
+// there f = 1 (KappaMeasure). The predicted onset is the first sample where h - h_cr <= 0.
+//
+// Onset strains are read in the metrics' measure (Metrics.h): the logarithmic strain of
+// the box from the stage start, gamma_max on shear programs, s e_aa on the axial axis.
 //
 // Engines report their own onsets as the acoustic-tensor indicator
 // q = min_n det(n.C_ep.n)/det(n.C_e.n) (extra "localization_q") and the band normal at
@@ -26,16 +30,30 @@
 
 namespace geocomp::compare {
 
-/// Strain measure of a curve kind along the main path of `stage` (-1: last), from the
-/// stage start: gamma_max (shear) or -eps_zz (axial). Also returns the sample indices.
-std::vector<double> onset_strain_measure(const Response &r, CurveKind kind, int stage,
-                                         std::vector<std::size_t> &samples);
+/// The strain an onset is reported in, for a box strain relative to a reference state:
+/// gamma_max of the relative log strain (shear) or sense e_aa on the axial axis.
+double onset_strain(const Tensor3 &strain, const Tensor3 &reference, CurveKind kind, const AxialAxis &axial);
 
-/// Rudnicki-Rice prediction along a continuum (material-point) Response.
+/// onset_strain along the main path of `stage` (-1: last), from the stage start, on
+/// `axial` (guessed from the response when empty). Also returns the sample indices.
+std::vector<double> onset_strain_measure(const Response &r, CurveKind kind, int stage,
+                                         std::vector<std::size_t> &samples,
+                                         std::optional<AxialAxis> axial = std::nullopt);
+
+/// What a continuum model's hardening variable kappa measures.
+enum class KappaMeasure {
+  mohr_coulomb, ///< kappa = eps1^p - eps3^p on the main plane: gamma^p = f(psi) kappa
+  shear_strain  ///< kappa = gamma^p = sqrt(2 e^p:e^p) (Drucker-Prager): f = 1
+};
+
+/// Rudnicki-Rice prediction along a continuum (material-point) Response whose model has
+/// hardening variable `measure`.
 OnsetEstimate rudnicki_rice_onset(const Response &r, const continuum::MohrCoulombParameters &mc,
-                                  continuum::DruckerPragerMatching matching, CurveKind kind, int stage = -1);
+                                  continuum::DruckerPragerMatching matching, KappaMeasure measure, CurveKind kind,
+                                  int stage = -1, std::optional<AxialAxis> axial = std::nullopt);
 
 /// An engine's own onset from its acoustic-tensor extras (not found if it has none).
-OnsetEstimate acoustic_tensor_onset(const Response &r, const std::string &source, CurveKind kind, int stage = -1);
+OnsetEstimate acoustic_tensor_onset(const Response &r, const std::string &source, CurveKind kind, int stage = -1,
+                                    std::optional<AxialAxis> axial = std::nullopt);
 
 } // namespace geocomp::compare

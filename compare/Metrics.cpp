@@ -36,6 +36,31 @@ double relative_volumetric(const Tensor3 &eps, const Tensor3 &eps0)
   return (Tensor3::Identity() + eps).determinant() / (Tensor3::Identity() + eps0).determinant() - 1.0;
 }
 
+const char *axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
+
+/// Index of the main-path sample the stage starts from and the stage's main-path samples.
+std::vector<std::size_t> stage_samples(const Response &response, int &stage)
+{
+  const auto &samples = response.samples;
+  std::vector<std::size_t> main;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    if (samples[i].branch == 0)
+      main.push_back(i);
+  if (main.empty())
+    throw std::invalid_argument("response has no main-path samples");
+  if (stage < 0)
+    stage = samples[main.back()].stage;
+  // The stage starts from the last main-path sample of the stages before it.
+  std::vector<std::size_t> idx;
+  for (std::size_t i : main)
+    if (samples[i].stage < stage)
+      idx.assign(1, i);
+  for (std::size_t i : main)
+    if (samples[i].stage == stage)
+      idx.push_back(i);
+  return idx;
+}
+
 double mobilized_sin_phi(const Tensor3 &stress)
 {
   const Vector3 s = principal_values(stress);
@@ -65,6 +90,82 @@ CurveKind parse_curve_kind(const std::string &text)
   throw std::invalid_argument("curve kind '" + text + "': expected shear, axial or auto");
 }
 
+std::string AxialAxis::describe() const
+{
+  return std::string(axis_name(axis)) + (sense < 0 ? ", compression positive" : ", extension positive");
+}
+
+std::string AxialAxis::strain_label() const
+{
+  return std::string("eps_") + axis_name(axis) + (sense < 0 ? " (compr. +)" : " (ext. +)");
+}
+
+std::string AxialAxis::stress_label() const
+{
+  return std::string("sigma_") + axis_name(axis) + (sense < 0 ? " (compr. +)" : " (tension +)");
+}
+
+std::optional<AxialAxis> axial_axis_for(const LoadingProgram &program, int stage)
+{
+  if (program.stages.empty())
+    return std::nullopt;
+  const Stage &s = program.stages[stage < 0 ? program.stages.size() - 1 : static_cast<std::size_t>(stage)];
+  if (s.isochoric)
+    return std::nullopt;
+  AxialAxis a;
+  double fastest = 0.0;
+  for (int k = 0; k < 3; ++k)
+    if (!s.axes[k].is_stress() && std::abs(s.axes[k].value) > fastest) {
+      fastest = std::abs(s.axes[k].value);
+      a.axis = k;
+      a.sense = s.axes[k].value < 0.0 ? -1.0 : 1.0;
+    }
+  if (fastest > 0.0)
+    return a;
+  // All stress-driven: the target farthest from the mean of the other two.
+  double farthest = -1.0;
+  for (int k = 0; k < 3; ++k) {
+    if (!s.axes[k].is_stress())
+      continue;
+    double others = 0.0;
+    int n = 0;
+    for (int m = 0; m < 3; ++m)
+      if (m != k && s.axes[m].is_stress()) {
+        others += s.axes[m].value;
+        ++n;
+      }
+    const double d = s.axes[k].value - (n ? others / n : 0.0);
+    if (std::abs(d) > farthest) {
+      farthest = std::abs(d);
+      a.axis = k;
+      a.sense = d < 0.0 ? -1.0 : 1.0;
+    }
+  }
+  return a;
+}
+
+AxialAxis guess_axial_axis(const Response &response, int stage)
+{
+  const std::vector<std::size_t> idx = stage_samples(response, stage);
+  const Tensor3 e0 = response.samples[idx.front()].strain;
+  Vector3 change = Vector3::Zero();
+  for (std::size_t i : idx) {
+    const Tensor3 e = relative_log_strain(response.samples[i].strain, e0);
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(e(k, k)) > std::abs(change[k]))
+        change[k] = e(k, k);
+  }
+  AxialAxis a;
+  change.cwiseAbs().maxCoeff(&a.axis);
+  a.sense = change[a.axis] > 0.0 ? 1.0 : -1.0;
+  return a;
+}
+
+Tensor3 relative_log_strain(const Tensor3 &strain, const Tensor3 &reference)
+{
+  return logarithmic_strain(strain) - logarithmic_strain(reference);
+}
+
 CurveKind curve_kind_for(const LoadingProgram &program)
 {
   for (const auto &s : program.stages)
@@ -92,28 +193,12 @@ CurveKind guess_curve_kind(const Response &response)
   return max_ev < 1e-6 && max_g > 1e-5 ? CurveKind::ShearIsochoric : CurveKind::AxialLateral;
 }
 
-Curve extract_curve(const Response &response, CurveKind kind, int stage)
+Curve extract_curve(const Response &response, CurveKind kind, int stage, std::optional<AxialAxis> axial)
 {
   if (kind == CurveKind::Auto)
     kind = guess_curve_kind(response);
   const auto &samples = response.samples;
-  std::vector<std::size_t> main;
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    if (samples[i].branch == 0)
-      main.push_back(i);
-  if (main.empty())
-    throw std::invalid_argument("response has no main-path samples");
-  if (stage < 0)
-    stage = samples[main.back()].stage;
-  // The stage starts from the last main-path sample of the stages before it.
-  std::vector<std::size_t> idx;
-  for (std::size_t i : main)
-    if (samples[i].stage < stage) {
-      idx.assign(1, i);
-    }
-  for (std::size_t i : main)
-    if (samples[i].stage == stage)
-      idx.push_back(i);
+  const std::vector<std::size_t> idx = stage_samples(response, stage);
   if (idx.size() < 3)
     throw std::invalid_argument("stage " + std::to_string(stage) + " has " + std::to_string(idx.size()) +
                                 " main-path samples; metrics need at least 3");
@@ -122,13 +207,18 @@ Curve extract_curve(const Response &response, CurveKind kind, int stage)
   c.kind = kind;
   c.stage = stage;
   const bool shear = kind == CurveKind::ShearIsochoric;
-  c.x_name = shear ? "gamma_max" : "-eps_zz";
-  c.y_name = shear ? "tau_max" : "-sigma_zz";
+  if (!shear)
+    c.axial = axial ? *axial : guess_axial_axis(response, stage);
+  const int a = c.axial.axis;
+  const double sense = c.axial.sense;
+  c.x_name = shear ? "gamma_max" : std::string(sense < 0 ? "-" : "") + "eps_" + axis_name(a) + axis_name(a);
+  c.y_name = shear ? "tau_max" : std::string(sense < 0 ? "-" : "") + "sigma_" + axis_name(a) + axis_name(a);
   const Tensor3 eps0 = samples[idx.front()].strain;
   auto xy = [&](const ResponseSample &s) {
+    const Tensor3 e = relative_log_strain(s.strain, eps0);
     if (shear)
-      return std::pair<double, double>(gamma_max(s.strain - eps0), tau_max(s.stress));
-    return std::pair<double, double>(-(s.strain(2, 2) - eps0(2, 2)), -s.stress(2, 2));
+      return std::pair<double, double>(gamma_max(e), tau_max(s.stress));
+    return std::pair<double, double>(sense * e(a, a), sense * s.stress(a, a));
   };
   std::map<std::size_t, std::size_t> position; // sample index -> main-path position
   for (std::size_t i : idx) {
@@ -137,9 +227,10 @@ Curve extract_curve(const Response &response, CurveKind kind, int stage)
     position[i] = c.x.size();
     c.x.push_back(x);
     c.y.push_back(y);
-    c.gamma.push_back(gamma_max(s.strain - eps0));
+    const Tensor3 e = relative_log_strain(s.strain, eps0);
+    c.gamma.push_back(gamma_max(e));
     c.tau.push_back(tau_max(s.stress));
-    c.eps_v.push_back(relative_volumetric(s.strain, eps0));
+    c.eps_v.push_back(e.trace());
     c.p.push_back(mean_stress(s.stress));
     c.q.push_back(von_mises(s.stress));
     c.sin_phi.push_back(mobilized_sin_phi(s.stress));
@@ -229,7 +320,7 @@ std::vector<double> moving_average(const std::vector<double> &y, int half_window
 
 MetricSet compute_metrics(const Response &response, const MetricOptions &options)
 {
-  MetricSet m = compute_metrics(extract_curve(response, options.kind, options.stage), options);
+  MetricSet m = compute_metrics(extract_curve(response, options.kind, options.stage, options.axial), options);
   m.engine = response.engine;
   return m;
 }
@@ -238,6 +329,7 @@ MetricSet compute_metrics(const Curve &c, const MetricOptions &o)
 {
   MetricSet m;
   m.kind = c.kind;
+  m.axial = c.axial;
   m.stage = c.stage;
   const std::size_t n = c.x.size();
   if (n < 3) {
@@ -420,8 +512,8 @@ MetricSet compute_metrics(const Curve &c, const MetricOptions &o)
 std::vector<MetricValue> metric_table(const MetricSet &m)
 {
   const bool shear = m.kind == CurveKind::ShearIsochoric;
-  const std::string s = shear ? "tau_max" : "sigma_z (compr. +)";
-  const std::string e = shear ? "gamma_max" : "eps_z (compr. +)";
+  const std::string s = shear ? "tau_max" : m.axial.stress_label();
+  const std::string e = shear ? "gamma_max" : m.axial.strain_label();
   const double MPa = 1e-6, pct = 100.0;
   return {
     {"initial_modulus_MPa", "initial modulus d" + s + "/d" + e, "MPa", m.initial_modulus * MPa},

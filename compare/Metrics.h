@@ -3,17 +3,23 @@
 // stress-strain curve (S0 Fig. 2 and Fig. 5), computed by one piece of code whichever
 // engine produced the curve.
 //
-// Conventions. Inside the code stress and strain are tension positive (Tensor.h). The
-// curve a metric is read from is oriented "loading positive": on the isochoric shear curve
-// (S0 program 1) x = gamma_max = eps_max - eps_min and y = tau_max = (s_max - s_min)/2, both
-// sign-free; on the lateral-pressure curve (S0 program 2) x = -eps_zz and y = -sigma_zz,
-// i.e. **compression positive**, as geomechanics plots them. Strains are measured from the
-// start of the analysed stage, stresses are absolute (y0 is the value at the stage start).
+// Conventions. Inside the code stress and strain are tension positive (Tensor.h). Measures:
+// the **logarithmic strain** of the box, e = ln(L / L_start) = ln(1 + eps) - ln(1 + eps_start)
+// (the box axes never rotate, so these add), and the **Cauchy stress** (force over current
+// area), for every engine alike. The curve a metric is read from is oriented "loading
+// positive": on the isochoric shear curve (S0 program 1) x = gamma_max = e_max - e_min and
+// y = tau_max = (s_max - s_min)/2, both sign-free; on the axial curve (S0 program 2) of axis a
+// x = s e_aa and y = s sigma_aa with s = -1 when the axis is shortened (**compression
+// positive**, as geomechanics plots it) and s = +1 when it is extended. The axis and its
+// sense come from the program (axial_axis_for) or, without one, from the response. Strains
+// are measured from the start of the analysed stage, stresses are absolute (y0 is the value
+// at the stage start); the volumetric strain is ln(V / V_start) = tr e, dilation positive.
 // Every definition, window and tolerance is listed in docs/metrics.md.
 #include "common/LoadingProgram.h"
 #include "common/Response.h"
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +41,28 @@ CurveKind curve_kind_for(const LoadingProgram &program);
 /// Kind guessed from a Response: shear when |eps_v| stays below 1e-6 while gamma_max grows.
 CurveKind guess_curve_kind(const Response &response);
 
+/// The axis of an axial curve and its sense: x = sense e_aa, y = sense sigma_aa.
+struct AxialAxis {
+  int axis = 2;        ///< 0, 1, 2 = x, y, z
+  double sense = -1.0; ///< -1 shortened (compression positive), +1 extended
+  /// "z, compression positive" etc.
+  std::string describe() const;
+  /// Table names: "eps_z (compr. +)", "sigma_z (compr. +)".
+  std::string strain_label() const;
+  std::string stress_label() const;
+};
+/// From a program's stage (-1: the last): its kinematic axis with the largest non-zero rate,
+/// shortened or extended as the rate says; without one, the stress axis whose target
+/// differs most from the others'. std::nullopt for an isochoric stage.
+std::optional<AxialAxis> axial_axis_for(const LoadingProgram &program, int stage = -1);
+/// From a response's stage (-1: the last): the axis whose logarithmic strain changes most
+/// over the main path, in the sense it changes.
+AxialAxis guess_axial_axis(const Response &response, int stage = -1);
+
+/// Logarithmic strain of the box relative to a reference state of it (engineering box
+/// strains in, both diagonal in the same axes): ln(1 + eps) - ln(1 + eps_reference).
+Tensor3 relative_log_strain(const Tensor3 &strain, const Tensor3 &reference);
+
 /// One stress-strain curve of one stage, in loading-positive measures (see the file
 /// comment), with its unloading branches and the per-sample state the metrics need.
 /// Extracting it once keeps every metric (and every plot) reading the same numbers.
@@ -47,12 +75,13 @@ struct Curve {
     bool reached_target = false;
   };
   CurveKind kind = CurveKind::ShearIsochoric;
+  AxialAxis axial;            ///< the axis of an axial curve
   int stage = 0;
   std::string x_name, y_name; ///< e.g. "gamma_max", "tau_max"
   std::vector<double> x, y;   ///< main path, x from the stage start
-  std::vector<double> gamma;  ///< gamma_max of the strain since the stage start
+  std::vector<double> gamma;  ///< gamma_max of the log strain since the stage start
   std::vector<double> tau;    ///< tau_max [Pa]
-  std::vector<double> eps_v;  ///< volumetric strain since the stage start, dilation positive
+  std::vector<double> eps_v;  ///< ln(V / V_start) = tr e, dilation positive
   std::vector<double> p;      ///< mean stress tr(sigma)/3 [Pa], tension positive
   std::vector<double> q;      ///< von Mises equivalent stress [Pa]
   std::vector<double> sin_phi; ///< mobilized (sigma_1 - sigma_3)/(sigma_1 + sigma_3), compression positive
@@ -60,13 +89,16 @@ struct Curve {
   double y0() const { return y.empty() ? 0.0 : y.front(); }
 };
 
-/// Extracts the curve of `stage` (-1: the last stage on the main path). Throws
-/// std::invalid_argument when the stage has fewer than 3 main-path samples.
-Curve extract_curve(const Response &response, CurveKind kind, int stage = -1);
+/// Extracts the curve of `stage` (-1: the last stage on the main path); an axial curve on
+/// `axial`, or on guess_axial_axis() without it. Throws std::invalid_argument when the
+/// stage has fewer than 3 main-path samples.
+Curve extract_curve(const Response &response, CurveKind kind, int stage = -1,
+                    std::optional<AxialAxis> axial = std::nullopt);
 
 /// Every window and tolerance of the metric definitions (defaults in docs/metrics.md).
 struct MetricOptions {
   CurveKind kind = CurveKind::Auto;
+  std::optional<AxialAxis> axial;      ///< axis of an axial curve (axial_axis_for); empty: guessed
   int stage = -1;                      ///< -1: the last stage
   int smoothing_half_window = 2;       ///< centred moving average of y over 2k+1 samples (0: none)
   double initial_fraction = 0.25;      ///< initial-modulus window: y - y0 <= f (peak - y0)
@@ -92,6 +124,7 @@ struct BranchResidual {
 /// the axial curve is compression positive. NaN where a metric does not exist (reasons in notes).
 struct MetricSet {
   CurveKind kind = CurveKind::ShearIsochoric;
+  AxialAxis axial;                     ///< the axis of an axial curve
   int stage = 0;
   std::string engine;
   double y0 = 0.0;                     ///< stress at the stage start

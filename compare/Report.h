@@ -38,6 +38,7 @@ struct ReportInput {
   std::string title = "geocomp: DEM and continuum compared";
   std::string case_name;
   CurveKind kind = CurveKind::Auto; ///< of the overlays; Auto: the first metric set's kind
+  std::optional<AxialAxis> axial;   ///< axis of an axial curve (axial_axis_for); empty: guessed
   int stage = -1;                   ///< analysed stage (-1: last)
   std::vector<NamedResponse> responses;
   std::vector<NamedMetrics> metrics; ///< the first is the reference of the differences

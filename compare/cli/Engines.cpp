@@ -112,6 +112,7 @@ continuum::MaterialPointParameters material_point_parameters(const CaseDescripti
   continuum::MaterialPointParameters p;
   p.initial_stress = -c.specimen.isotropic_pressure; // tension positive
   p.substeps_per_advance = c.continuum.point_substeps;
+  p.kinematics = continuum::parse_kinematics(c.continuum.kinematics);
   return p;
 }
 
@@ -128,6 +129,7 @@ continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::s
     p.imperfection_centre[a] = c.continuum.imperfection_centre[a] * p.side;
   p.regularization = c.continuum.regularization;
   p.volumetric_integration = c.continuum.volumetric_integration;
+  p.kinematics = continuum::parse_kinematics(c.continuum.kinematics);
   p.linear_solver = c.continuum.linear_solver;
   p.preconditioner = c.continuum.preconditioner;
   p.near_null_space = c.continuum.near_null_space;

@@ -85,11 +85,11 @@ void add_continuum_plane(compare::ReportInput &in, const fs::path &dir)
   in.maps.push_back(kappa);
 }
 
-/// The strain measure onsets are reported in (compare::onset_strain_measure's): -eps_zz
-/// on axial programs, gamma_max on isochoric ones.
-double onset_label(const ResponseSample &s, compare::CurveKind kind)
+/// The strain measure onsets are reported in (compare::onset_strain): the log strain from
+/// the program start, on the program's axial axis or gamma_max on isochoric programs.
+double onset_label(const ResponseSample &s, compare::CurveKind kind, const compare::AxialAxis &axial)
 {
-  return kind == compare::CurveKind::AxialLateral ? -s.strain(2, 2) : gamma_max(s.strain);
+  return compare::onset_strain(s.strain, Tensor3::Zero(), kind, axial);
 }
 
 /// DEM particle snapshots along the main path of the last stage, for the localization
@@ -99,7 +99,9 @@ class SnapshotRecorder {
 public:
   SnapshotRecorder(dem::DemEngine &engine, const CaseDescription &c, const fs::path &dir)
     : engine_(engine), file_(dir / dem_fields_file), n_(std::max(1u, c.dem.snapshots)),
-      kind_(compare::curve_kind_for(c.program)), sample_interval_(c.program.sample_interval)
+      kind_(compare::curve_kind_for(c.program)),
+      axial_(compare::axial_axis_for(c.program).value_or(compare::AxialAxis{})),
+      sample_interval_(c.program.sample_interval)
   {
     fs::create_directories(dir);
   }
@@ -139,7 +141,7 @@ public:
       return;
     if (next_ > 0 && p.stage_fraction < double(next_) / double(n_) - 1e-12)
       return;
-    dem::append_snapshot(file_, engine_.snapshot(onset_label(*p.sample, kind_)));
+    dem::append_snapshot(file_, engine_.snapshot(onset_label(*p.sample, kind_, axial_)));
     while (next_ <= n_ && p.stage_fraction >= double(next_) / double(n_) - 1e-12)
       ++next_;
   }
@@ -149,6 +151,7 @@ private:
   fs::path file_;
   unsigned int n_, next_ = 0;
   compare::CurveKind kind_;
+  compare::AxialAxis axial_;
   double sample_interval_;
 };
 
@@ -286,6 +289,9 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
     meta.case_text = c.text;
     meta.command = command_line;
     meta.seed = c.seed;
+    meta.kinematics = engine == "dem" ? "finite strain (particle positions; box strain ln(L/L0), wall force over "
+                                        "current wall area)"
+                                      : c.continuum.kinematics;
     write_response(file, r, meta);
     std::cout << engine << ": " << r.samples.size() << " samples, " << r.branches.size()
               << " unloading branches -> " << file.string() << "\n";
@@ -309,8 +315,10 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
   in.title = c.title.empty() ? "geocomp: " + c.file : c.title;
   in.case_name = c.file;
   in.kind = compare::curve_kind_for(c.program);
+  in.axial = compare::axial_axis_for(c.program);
   compare::MetricOptions options;
   options.kind = in.kind;
+  options.axial = in.axial;
   for (const auto &[engine, response] : runs) {
     in.responses.push_back({label_of(engine), response});
     try {
@@ -326,7 +334,8 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
     if (engine == "material-point")
       point = &response;
     if (engine != "dem")
-      onsets.push_back(compare::acoustic_tensor_onset(response, label_of(engine) + " (acoustic tensor)", in.kind));
+      onsets.push_back(
+        compare::acoustic_tensor_onset(response, label_of(engine) + " (acoustic tensor)", in.kind, -1, in.axial));
     else
       add_dem_fields(in, dir, onsets);
     if (engine == "continuum")
@@ -349,15 +358,19 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
                        "case's model is nikolaevsky.");
   } else if (point) {
     const continuum::MaterialParameters m = continuum_material(c);
+    const compare::KappaMeasure measure = c.continuum.model == "drucker-prager" ? compare::KappaMeasure::shear_strain
+                                                                                : compare::KappaMeasure::mohr_coulomb;
     in.verdict = compare::rudnicki_rice_verdict(
-      compare::rudnicki_rice_onset(*point, m.mohr_coulomb, m.drucker_prager_matching, in.kind), onsets);
+      compare::rudnicki_rice_onset(*point, m.mohr_coulomb, m.drucker_prager_matching, measure, in.kind, -1, in.axial),
+      onsets);
   } else {
     in.notes.push_back("No Rudnicki-Rice prediction: add 'material-point' to the case's engines.");
   }
-  in.notes.push_back("Stresses in the plots and tables: " +
-                     std::string(in.kind == compare::CurveKind::AxialLateral
-                                   ? "compression positive (axial curve)."
-                                   : "tau_max and gamma_max are sign-free."));
+  in.notes.push_back("Measures, the same for every engine: logarithmic strain ln(L/L0) of the box edges and "
+                     "Cauchy stress (force over current area); continuum kinematics: " + c.continuum.kinematics + ". " +
+                     (in.kind == compare::CurveKind::AxialLateral
+                        ? "Axial curve on axis " + in.axial.value_or(compare::AxialAxis{}).describe() + "."
+                        : std::string("tau_max and gamma_max are sign-free.")));
   return in;
 }
 

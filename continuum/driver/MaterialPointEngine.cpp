@@ -16,6 +16,11 @@ struct MaterialPointEngine::Saved : EngineState {
   MaterialPointUpdate state;
   double q_min, onset_time;
   Vector3 onset_normal;
+  bool plastic_control;
+  int control_axis;
+  double kappa_rate;
+  Tensor3 last_step;
+  double last_dt;
 };
 
 namespace {
@@ -39,7 +44,7 @@ MaterialPointEngine::MaterialPointEngine(std::shared_ptr<const ConstitutiveModel
     throw std::invalid_argument("MaterialPointEngine: localization_directions must be >= 10");
   // The initial stress is carried as an elastic pre-strain that the box strain does not see.
   prestrain_ = model_->elasticity().compliance() * to_mandel(prm_.initial_stress * Tensor3::Identity());
-  Evaluation start;
+  PointEvaluation start;
   if (!evaluate(Tensor3::Zero(), start))
     throw std::invalid_argument("MaterialPointEngine: the initial stress is not admissible");
   state_ = start.state;
@@ -57,7 +62,7 @@ MaterialPointEngine::MaterialPointEngine(const MaterialParameters &material,
 //     tau = model(e + eps_0, history),  sigma = tau / J,  J = exp(tr e) = prod(1 + eps_i),
 //     d sigma_a / d eps_b = (D_ab - tau_a) / (J (1 + eps_b)),
 // D the model's consistent tangent. (A test checks it against finite_strain_update.)
-bool MaterialPointEngine::evaluate(const Tensor3 &eps, Evaluation &out) const
+bool MaterialPointEngine::evaluate(const Tensor3 &eps, PointEvaluation &out) const
 {
   try {
     if (prm_.kinematics == Kinematics::small_strain) {
@@ -95,13 +100,15 @@ std::vector<ExtraColumn> MaterialPointEngine::extra_columns() const
           {"localization_nx", "1", "band normal at onset, x"},
           {"localization_ny", "1", "band normal at onset, y"},
           {"localization_nz", "1", "band normal at onset, z"},
-          {"newton_iterations", "1", "largest stress-axis Newton iteration count in the last interval"}};
+          {"newton_iterations", "1", "largest stress-axis Newton iteration count in the last interval"},
+          {"control", "1", "0: the program's strains; 1: plastic-strain control past a snap-back of the driven axis"}};
 }
 
 void MaterialPointEngine::begin_control(const StageControl &control)
 {
   control_ = control;
   has_control_ = true;
+  plastic_control_ = false;
   // Ramp only the targets that change: a control resumed after a branch (or a stage that
   // keeps its stress) must follow exactly the path it would have followed without it.
   bool changes = false;
@@ -129,98 +136,56 @@ double MaterialPointEngine::target_stress(int axis, double t) const
   return ramp_from_[axis] + f * (target - ramp_from_[axis]);
 }
 
+// The equations of one increment (MixedControl.h): the program's strains on the kinematic
+// axes and its stress targets; under plastic-strain control the driven axis joins the
+// unknowns and kappa its target.
 bool MaterialPointEngine::increment(double t)
 {
-  Tensor3 eps = strain_;
-  int stress_axes[3], n_s = 0;
-  for (int a = 0; a < 3; ++a) {
-    if (control_.kinematic(a))
-      eps(a, a) = control_.strain(a, t);
-    else
-      stress_axes[n_s++] = a;
+  if (plastic_control_) {
+    // The program's control first: once it has a solution again, the path is back on the
+    // program (a strain-controlled rig would have snapped there).
+    plastic_control_ = false;
+    if (increment(t))
+      return true;
+    plastic_control_ = true;
   }
-  Evaluation up;
-  if (!evaluate(eps, up))
-    return false;
-  unsigned it = 0;
-  if (n_s > 0) {
-    Eigen::VectorXd target(n_s), r(n_s);
-    // Mandel slots 0..2 are the normal components, unweighted.
-    auto residual = [&](const Evaluation &e, Eigen::VectorXd &res) {
-      const MaterialPointUpdate &u = e.state;
-      double scale = 1.0;
-      for (int i = 0; i < 3; ++i)
-        scale = std::max(scale, std::abs(u.stress[i]));
-      double worst = 0.0;
-      for (int k = 0; k < n_s; ++k) {
-        const int a = stress_axes[k];
-        res[k] = u.stress[a] - target[k];
-        worst = std::max(worst, std::abs(res[k]) / std::max(scale, std::abs(target[k])));
-      }
-      return worst;
-    };
-    for (int k = 0; k < n_s; ++k)
-      target[k] = target_stress(stress_axes[k], t);
-    double err = residual(up, r);
-    while (err > prm_.stress_tolerance) {
-      if (++it > prm_.max_iterations)
-        return false;
-      Eigen::MatrixXd J(n_s, n_s);
-      for (int k = 0; k < n_s; ++k)
-        for (int m = 0; m < n_s; ++m)
-          J(k, m) = up.axial_tangent(stress_axes[k], stress_axes[m]);
-      // Symmetric programs stay symmetric: stress axes with the same target and the same
-      // strain are tied to one unknown (P maps tied unknowns to axes), so the corner of the
-      // yield surface a triaxial test sits on (sigma_1 = sigma_2, where the split of the
-      // lateral strain is indeterminate) cannot break the symmetry through round-off.
-      Eigen::MatrixXd P = Eigen::MatrixXd::Zero(n_s, n_s);
-      int n_u = 0;
-      std::array<int, 3> group{-1, -1, -1};
-      for (int k = 0; k < n_s; ++k) {
-        for (int m = 0; m < k && group[k] < 0; ++m) {
-          const int a = stress_axes[k], b = stress_axes[m];
-          const double de = std::abs(eps(a, a) - eps(b, b));
-          if (target[k] == target[m] && de <= 1e-13 * std::max(std::abs(eps(a, a)), 1e-6))
-            group[k] = group[m];
-        }
-        if (group[k] < 0)
-          group[k] = n_u++;
-        P(k, group[k]) = 1.0;
-      }
-      P.conservativeResize(n_s, n_u);
-      const Eigen::MatrixXd J_red = P.transpose() * J * P;
-      // Minimum-norm step: on a corner the remaining block can still be singular.
-      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(J_red);
-      cod.setThreshold(1e-10);
-      if (cod.rank() == 0)
-        return false;
-      const Eigen::VectorXd de = -P * cod.solve(P.transpose() * r);
-      // Damped update: halve while the residual norm grows.
-      double alpha = 1.0;
-      Eigen::VectorXd r_new(n_s);
-      Evaluation trial;
-      Tensor3 eps_trial;
-      bool ok = false;
-      for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
-        eps_trial = eps;
-        for (int k = 0; k < n_s; ++k)
-          eps_trial(stress_axes[k], stress_axes[k]) += alpha * de[k];
-        if (!evaluate(eps_trial, trial))
-          continue;
-        ok = true;
-        residual(trial, r_new);
-        if (r_new.norm() < r.norm())
-          break;
-      }
-      if (!ok)
-        return false;
-      eps = eps_trial;
-      up = trial;
-      err = residual(up, r);
+  IncrementEquations eq;
+  Tensor3 eps = strain_;
+  for (int a = 0; a < 3; ++a) {
+    if (plastic_control_ && a == control_axis_) {
+      eq.unknown[eq.n_unknown++] = a;
+      eps(a, a) += last_step_(a, a) * (t - time_) / std::max(last_dt_, 1e-300); // extrapolated guess
+    } else if (control_.kinematic(a)) {
+      eps(a, a) = control_.strain(a, t);
+    } else {
+      eq.unknown[eq.n_unknown++] = a;
+      eq.stress_axis[eq.n_stress] = a;
+      eq.target[eq.n_stress++] = target_stress(a, t);
     }
   }
-  last_iterations_ = it;
-  max_iterations_in_advance_ = std::max(max_iterations_in_advance_, it);
+  if (plastic_control_) {
+    eq.control_kappa = true;
+    eq.kappa_scale = kappa_rate_ * (t - time_);
+    eq.kappa_target = state_.history.kappa + eq.kappa_scale;
+  }
+  IncrementSettings settings;
+  settings.stress_tolerance = prm_.stress_tolerance;
+  settings.max_iterations = prm_.max_iterations;
+  const PointEvaluator evaluator = [this](const Tensor3 &e, PointEvaluation &out) { return evaluate(e, out); };
+  PointEvaluation up;
+  unsigned iterations = 0;
+  if (!solve_increment(eq, evaluator, settings, eps, up, iterations))
+    return false;
+  commit(eps, up, t, iterations);
+  return true;
+}
+
+void MaterialPointEngine::commit(const Tensor3 &eps, const PointEvaluation &up, double t, unsigned iterations)
+{
+  last_iterations_ = iterations;
+  max_iterations_in_advance_ = std::max(max_iterations_in_advance_, iterations);
+  last_step_ = eps - strain_;
+  last_dt_ = t - time_;
   strain_ = eps;
   state_ = up.state;
   time_ = t;
@@ -239,6 +204,32 @@ bool MaterialPointEngine::increment(double t)
   } else {
     q_min_ = 1.0;
   }
+}
+
+// Plastic-strain control applies to a flowing point whose program drives one axis and holds
+// stresses on others: the driven axis is the kinematic axis with the fastest rate.
+bool MaterialPointEngine::start_plastic_control()
+{
+  if (plastic_control_ || state_.region == ReturnRegion::elastic || !(kappa_rate_ > 0.0))
+    return false;
+  int axis = -1, stress_axes = 0;
+  double fastest = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    if (!control_.kinematic(a)) {
+      ++stress_axes;
+      continue;
+    }
+    const double rate = std::abs(control_.strain_rate(a, time_));
+    if (rate > fastest) {
+      fastest = rate;
+      axis = a;
+    }
+  }
+  if (axis < 0 || stress_axes == 0)
+    return false;
+  plastic_control_ = true;
+  control_axis_ = axis;
+  last_step_ = Tensor3::Zero();
   return true;
 }
 
@@ -249,7 +240,7 @@ void MaterialPointEngine::advance_to(double t_end)
   if (ramp_t1_ < 0.0)
     ramp_t1_ = t_end;
   max_iterations_in_advance_ = 0;
-  const double t_start = time_;
+  const double t_start = time_, kappa_start = state_.history.kappa;
   const double dt_nominal = (t_end - t_start) / prm_.substeps_per_advance;
   double dt = dt_nominal;
   unsigned cuts = 0;
@@ -262,6 +253,13 @@ void MaterialPointEngine::advance_to(double t_end)
       continue;
     }
     if (++cuts > prm_.max_cutbacks) {
+      if (time_ > t_start && state_.history.kappa > kappa_start && !plastic_control_)
+        kappa_rate_ = (state_.history.kappa - kappa_start) / (time_ - t_start);
+      if (start_plastic_control()) { // a snap-back: follow it in kappa
+        cuts = 0;
+        dt = dt_nominal;
+        continue;
+      }
       std::ostringstream msg;
       msg << "material point: the stress-axis iteration did not converge at t = " << t
           << " after " << prm_.max_cutbacks << " cut-backs (is a stress-driven axis beyond the "
@@ -270,6 +268,8 @@ void MaterialPointEngine::advance_to(double t_end)
     }
     dt *= 0.5;
   }
+  if (!plastic_control_ && state_.history.kappa > kappa_start)
+    kappa_rate_ = (state_.history.kappa - kappa_start) / (time_ - t_start);
 }
 
 ResponseSample MaterialPointEngine::measure()
@@ -286,7 +286,8 @@ ResponseSample MaterialPointEngine::measure()
               onset_normal_[0],
               onset_normal_[1],
               onset_normal_[2],
-              static_cast<double>(max_iterations_in_advance_)};
+              static_cast<double>(max_iterations_in_advance_),
+              plastic_control_ ? 1.0 : 0.0};
   return s;
 }
 
@@ -299,6 +300,11 @@ std::unique_ptr<EngineState> MaterialPointEngine::save() const
   s->q_min = q_min_;
   s->onset_time = onset_time_;
   s->onset_normal = onset_normal_;
+  s->plastic_control = plastic_control_;
+  s->control_axis = control_axis_;
+  s->kappa_rate = kappa_rate_;
+  s->last_step = last_step_;
+  s->last_dt = last_dt_;
   return s;
 }
 
@@ -311,6 +317,11 @@ void MaterialPointEngine::restore(const EngineState &state)
   q_min_ = s.q_min;
   onset_time_ = s.onset_time;
   onset_normal_ = s.onset_normal;
+  plastic_control_ = s.plastic_control;
+  control_axis_ = s.control_axis;
+  kappa_rate_ = s.kappa_rate;
+  last_step_ = s.last_step;
+  last_dt_ = s.last_dt;
 }
 
 } // namespace geocomp::continuum

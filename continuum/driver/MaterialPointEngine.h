@@ -26,6 +26,21 @@
 // begin_control to the target over the first advance of the stage (a jump cannot be
 // subdivided, a ramp can); after that the target is held exactly.
 //
+// Snap-back (plastic-strain control). A softening point under mixed control can reach a
+// maximum of its driven strain: past it the homogeneous path needs the driven axis to move
+// back while kappa grows (steep softening, |h| of the order of G), and no increment of the
+// program's strain has a solution - the stress iteration fails at every cut-back. The
+// driver then follows the path in kappa instead: the driven axis (the kinematic axis with
+// the fastest rate) becomes an unknown and each increment prescribes
+//     kappa_{n+1} = kappa_n + kappa_rate dt,
+// kappa_rate the rate of the last advance before the switch (IncrementEquations,
+// MixedControl.h). Time, samples and stop conditions go on as before; the extra `control`
+// says which control a sample was reached under. Every increment first tries the program's
+// control again; once that has a solution (the path has turned, e.g. onto a residual
+// plateau) the program resumes - where a strain-controlled rig would have snapped to. The
+// path between is what such a rig cannot follow and a closed-loop test controlled by the
+// plastic strain records.
+//
 // Kinematics (`kinematics`, default finite strain; continuum/models/FiniteStrain.h). The
 // program's box edges L_i(t) = L_i0 (1 + eps_i(t)) give the deformation gradient exactly,
 //     F = diag(1 + eps_x, 1 + eps_y, 1 + eps_z),
@@ -43,6 +58,7 @@
 // spatial tangent, of the order of the stress over the modulus, are left out.
 #include "common/LoadingEngine.h"
 #include "continuum/driver/Materials.h"
+#include "continuum/driver/MixedControl.h"
 #include "continuum/models/AcousticTensorScan.h"
 #include "continuum/models/FiniteStrain.h"
 
@@ -86,17 +102,14 @@ public:
 private:
   /// Target stress of stress axis `a` at time t (with the stage-start ramp).
   double target_stress(int axis, double t) const;
-  /// The point at box strain `eps` from the committed state: the state to commit (Cauchy
-  /// stress; history, region and tangent of the model's update, which the localization
-  /// scan reads) and d sigma_aa / d eps_bb.
-  struct Evaluation {
-    MaterialPointUpdate state;
-    Matrix3 axial_tangent = Matrix3::Zero();
-  };
-  /// False when the return map fails.
-  bool evaluate(const Tensor3 &eps, Evaluation &out) const;
-  /// One increment to time t; false if the stress iteration did not converge.
+  /// The point at box strain `eps` from the committed state; false when the return map fails.
+  bool evaluate(const Tensor3 &eps, PointEvaluation &out) const;
+  /// One increment to time t under the current control; false if it did not converge.
   bool increment(double t);
+  /// Commits a converged increment and updates the localization record.
+  void commit(const Tensor3 &eps, const PointEvaluation &up, double t, unsigned iterations);
+  /// Switches to plastic-strain control after a failed increment, when it applies.
+  bool start_plastic_control();
 
   std::shared_ptr<const ConstitutiveModel> model_;
   AcousticTensorScan scan_;
@@ -116,6 +129,12 @@ private:
   double onset_time_ = -1.0;
   Vector3 onset_normal_ = Vector3::Zero();
   unsigned last_iterations_ = 0, max_iterations_in_advance_ = 0;
+  // Plastic-strain control (snap-back).
+  bool plastic_control_ = false;
+  int control_axis_ = -1;
+  double kappa_rate_ = 0.0;  ///< kappa per unit time of the last advance that flowed
+  Tensor3 last_step_ = Tensor3::Zero(); ///< strain change of the last increment (initial guess)
+  double last_dt_ = 0.0;                ///< its time step
 
   struct Saved;
 };

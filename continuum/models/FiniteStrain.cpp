@@ -45,7 +45,7 @@ Matrix9 spatial_tangent(const Matrix6 &D_L, const Matrix3 &b_trial, const Matrix
       Matrix3 db = Matrix3::Zero();
       db.row(k) += b_trial.row(l);
       db.col(k) += b_trial.col(l);
-      Matrix3 column = 0.5 * from_mandel(D_L * to_mandel(db)); // DSPO eq. (14.105), first term
+      Matrix3 column = 0.5 * from_mandel(D_L * to_mandel(db)); // first term
       column.col(k) -= tau.col(l);                            // - tau_il delta_jk
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -93,7 +93,7 @@ FiniteStrainUpdate finite_strain_update(const ConstitutiveModel &model, const Ma
     msg << "finite strain: det F = " << J << " (an inverted or degenerate point)";
     throw ReturnMapFailure(msg.str());
   }
-  // Elastic predictor (DSPO Box 14.3): b^e_trial = F_inc b^e_n F_inc^T.
+  // Elastic predictor (DSPO ch. 14): b^e_trial = F_inc b^e_n F_inc^T.
   const Matrix3 F_inc = F * old.deformation_gradient.inverse();
   const Matrix3 b_trial = F_inc * old.elastic_left_cauchy_green * F_inc.transpose();
   const SortedSpectrum spectrum = sorted_spectrum(b_trial);

@@ -10,7 +10,7 @@
 //
 //   F = F^e F^p,  b^e = F^e F^e^T,  eps^e = 1/2 ln b^e,  tau = J sigma = D^e : eps^e.
 //
-// Update from t_n to t_{n+1} (DSPO Box 14.3):
+// Update from t_n to t_{n+1} (DSPO ch. 14):
 //   F_inc = F_{n+1} F_n^{-1},  b^e_trial = F_inc b^e_n F_inc^T,
 //   eps^e_trial = 1/2 ln b^e_trial                       (spectral: 1/2 ln lambda_i^2),
 //   (tau, D, Delta eps^p, kappa_{n+1}) = the small-strain update of `model` at the total
@@ -19,7 +19,7 @@
 // The return map, run "as if small strain", is the backward-Euler exponential map of the
 // plastic flow: for psi = 0 every flow direction is traceless, so ln det F^p stays 0 exactly.
 //
-// Consistent spatial tangent of this algorithm (DSPO eq. 14.105):
+// Consistent spatial tangent of this algorithm (DSPO ch. 14):
 //   J a_ijkl = 1/2 [D : L : B]_ijkl - tau_il delta_jk,
 //   L = d ln b / d b at b^e_trial,   B_ijkl = delta_ik b_jl + delta_jk b_il  (b = b^e_trial),
 // with D = d tau / d eps^e_trial the small-strain algorithmic tangent. It is the derivative

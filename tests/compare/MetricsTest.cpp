@@ -3,6 +3,7 @@
 #include "compare/Metrics.h"
 #include "Synthetic.h"
 #include "common/ProgramRunner.h"
+#include "continuum/driver/MaterialPointEngine.h"
 #include "tests/common/HystereticShearEngine.h"
 
 #include <gtest/gtest.h>
@@ -139,8 +140,13 @@ TEST(Metrics, ElasticLimitFromRunnerBranchesBracketsTheExactOne)
 
   const MetricSet m = compute_metrics(r, MetricOptions{});
   ASSERT_EQ(m.branches.size(), r.branches.size());
-  for (std::size_t k = 0; k < r.branches.size(); ++k)
-    EXPECT_NEAR(m.branches[k].residual, r.branches[k].residual_gamma, 1e-12);
+  // The runner records residuals in the program's (engineering) strain; the metrics read
+  // the log strain of the same samples.
+  for (std::size_t k = 0; k < r.branches.size(); ++k) {
+    const Tensor3 &end = r.samples[r.branches[k].last_sample].strain;
+    EXPECT_NEAR(m.branches[k].residual, gamma_max(relative_log_strain(end, r.samples.front().strain)), 1e-12);
+    EXPECT_NEAR(m.branches[k].residual, r.branches[k].residual_gamma, 0.1 * r.branches[k].residual_gamma);
+  }
 
   // Exact: bisection on the residual function of the engine.
   auto residual = [&](double g) { return g - engine.backbone(g) / engine.K; };
@@ -166,8 +172,8 @@ TEST(Metrics, ElasticLimitFromRunnerBranchesBracketsTheExactOne)
 
 // Constant lateral pressure, compression positive: plastic strains planted with a fixed
 // dilatancy angle, sin psi = d eps_v^p / d gamma^p, on top of isotropic elasticity.
-// The strain is solved so that the code's own measures (gamma_max and det(I+eps)-1) hold
-// exactly, so psi comes back to round-off.
+// The strain is built so that the metrics' measures (gamma_max and tr of the logarithmic
+// strain) hold exactly, so psi comes back to round-off.
 TEST(Metrics, DilatancyAngleRecoveredFromPlantedPlasticFlow)
 {
   const double E = 1e9, nu = 0.25, G = E / (2 * (1 + nu)), K = E / (3 * (1 - 2 * nu));
@@ -182,16 +188,11 @@ TEST(Metrics, DilatancyAngleRecoveredFromPlantedPlasticFlow)
     const double gp = t < 0.3 ? 0.0 : 0.05 * (t - 0.3);
     const double tau = ds / 2, dp = -ds / 3;
     const double gamma = tau / G + gp, ev = dp / K + std::sin(psi) * gp;
-    // eps_x = eps_z + gamma and (1 + eps_x)^2 (1 + eps_z) = 1 + ev: Newton in eps_z.
-    double ez = -gamma / 1.5;
-    for (int it = 0; it < 50; ++it) {
-      const double a = 1 + ez + gamma, f = a * a * (1 + ez) - 1 - ev;
-      const double df = 2 * a * (1 + ez) + a * a;
-      ez -= f / df;
-    }
+    // Log strains e_x = e_y = e_z + gamma with e_x + e_y + e_z = ev.
+    const double ez = (ev - 2 * gamma) / 3;
     ResponseSample s;
     s.time = t;
-    s.strain = Vector3(ez + gamma, ez + gamma, ez).asDiagonal();
+    s.strain = Vector3(std::expm1(ez + gamma), std::expm1(ez + gamma), std::expm1(ez)).asDiagonal();
     s.stress = Vector3(-lateral, -lateral, -lateral - ds).asDiagonal();
     r.samples.push_back(s);
   }
@@ -238,4 +239,51 @@ TEST(Metrics, TooShortStageIsRefusedWithItsName)
   }
   EXPECT_THROW(parse_curve_kind("bogus"), std::invalid_argument);
   EXPECT_EQ(parse_curve_kind("axial"), CurveKind::AxialLateral);
+}
+
+// A program whose driven axis is x, extended while y and z hold -p (triaxial extension on a
+// Mohr-Coulomb point): the axial curve is read on x with x = e_xx, y = sigma_xx (extension
+// positive), found from the program and from the response alike, and rises from -p to the
+// extension strength (once z was taken whatever the program, and this curve fell).
+TEST(Metrics, AxialAxisAndSenseComeFromTheProgram)
+{
+  const double p = 1e6, c = 50e3, phi = 30.0 / deg;
+  continuum::MaterialParameters m;
+  m.mohr_coulomb.youngs_modulus = 1e9;
+  m.mohr_coulomb.poisson_ratio = 0.25;
+  m.mohr_coulomb.cohesion = continuum::PiecewiseLinear(c);
+  m.mohr_coulomb.friction_angle = continuum::PiecewiseLinear(phi);
+  m.mohr_coulomb.dilatancy_angle = continuum::PiecewiseLinear(0.0);
+  continuum::MaterialPointParameters mp;
+  mp.initial_stress = -p;
+  continuum::MaterialPointEngine engine(m, mp);
+  LoadingProgram program;
+  program.sample_interval = 0.05;
+  Stage s;
+  s.name = "extension";
+  s.axes = {{AxisDrive::rate(1e-3), AxisDrive::stress(-p), AxisDrive::stress(-p)}};
+  s.stop_any = {parse_condition("eps_xx >= 0.004", "test")};
+  s.max_duration = 100;
+  program.stages = {s};
+  const Response r = ProgramRunner(program, engine).run();
+  const std::optional<AxialAxis> axis = axial_axis_for(program);
+  ASSERT_TRUE(axis.has_value());
+  EXPECT_EQ(axis->axis, 0);
+  EXPECT_EQ(axis->sense, 1.0);
+  EXPECT_EQ(guess_axial_axis(r).axis, 0);
+  EXPECT_EQ(guess_axial_axis(r).sense, 1.0);
+  EXPECT_EQ(axis->describe(), "x, extension positive");
+  MetricOptions o;
+  o.kind = CurveKind::AxialLateral;
+  o.axial = axis;
+  const MetricSet metrics = compute_metrics(r, o);
+  EXPECT_NEAR(metrics.y0, -p, 1e-6 * p);
+  // Tension positive, s1 = sigma_x >= s2 = s3 = -p on (s1 - s3) + (s1 + s3) sin phi = 2 c cos phi:
+  // sigma_x = (2 c cos phi - p (1 - sin phi)) / (1 + sin phi) (to O(J - 1): the surface is on
+  // the Kirchhoff stress).
+  const double sx = (2 * c * std::cos(phi) - p * (1 - std::sin(phi))) / (1 + std::sin(phi));
+  EXPECT_NEAR(metrics.peak_stress / sx, 1.0, 2e-3);
+  EXPECT_GT(metrics.peak_stress, metrics.y0);
+  const auto table = metric_table(metrics);
+  EXPECT_NE(table[5].label.find("sigma_x (tension +)"), std::string::npos) << table[5].label;
 }

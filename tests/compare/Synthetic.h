@@ -35,13 +35,13 @@ struct Backbone {
   }
 };
 
-/// Isochoric lambda = 0 strain with gamma_max = g exactly: diag(-a, 0, b), (1-a)(1+b) = 1.
+/// Isochoric lambda = 0 box strain whose logarithmic gamma_max is g exactly (the metrics'
+/// measure): log strains (-g/2, 0, g/2), engineering strains exp(.) - 1.
 inline Tensor3 isochoric_strain(double g)
 {
-  const double a = 0.5 * ((2 + g) - std::sqrt((2 + g) * (2 + g) - 4 * g));
   Tensor3 e = Tensor3::Zero();
-  e(0, 0) = -a;
-  e(2, 2) = a / (1 - a);
+  e(0, 0) = std::expm1(-0.5 * g);
+  e(2, 2) = std::expm1(0.5 * g);
   return e;
 }
 
