@@ -27,6 +27,18 @@ void scale_table(HardeningTable &t, double target_max)
     p.second *= target_max / m;
 }
 
+/// The strain and stress in which Hooke's law is linear for the case's kinematics: at finite
+/// strain the logarithmic strain ln(I + eps) and the Kirchhoff stress J sigma (Hencky
+/// elasticity, FiniteStrain.h), at small strain the engineering strain and the stress.
+struct HookeMeasures {
+  bool finite = true;
+  Tensor3 strain(const ResponseSample &s) const { return finite ? logarithmic_strain(s.strain) : s.strain; }
+  Tensor3 stress(const ResponseSample &s) const
+  {
+    return finite ? Tensor3((Tensor3::Identity() + s.strain).determinant() * s.stress) : s.stress;
+  }
+};
+
 /// E and nu from the unloading branches, which S0 takes as elastic (the residual strain
 /// after unloading from O-A-B is small). Hooke's law in increments from each branch's start,
 ///   d eps = (1/E) d sigma + (nu/E) (d sigma - tr(d sigma) I),
@@ -38,7 +50,7 @@ struct Elasticity {
   std::size_t branches = 0;
 };
 
-Elasticity unloading_elasticity(const Response &r)
+Elasticity unloading_elasticity(const Response &r, const HookeMeasures &m)
 {
   std::vector<std::array<double, 3>> rows; // (d sigma_ij, d sigma_ij - tr d sigma delta_ij, d eps_ij)
   Elasticity out;
@@ -49,8 +61,8 @@ Elasticity unloading_elasticity(const Response &r)
     const ResponseSample &start = r.samples[b.first_sample];
     ++out.branches;
     for (std::size_t k = 0; k < (path.size() + 1) / 2; ++k) {
-      const Tensor3 ds = path[k]->stress - start.stress;
-      const Tensor3 de = path[k]->strain - start.strain;
+      const Tensor3 ds = m.stress(*path[k]) - m.stress(start);
+      const Tensor3 de = m.strain(*path[k]) - m.strain(start);
       const Tensor3 dev = ds - ds.trace() * Tensor3::Identity();
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -94,7 +106,7 @@ Elasticity unloading_elasticity(const Response &r)
 /// written compression positive). The elastic parts come from the stress change with the
 /// estimated E and nu: eps^e = ((1 + nu) d sigma - nu tr(d sigma) I)/E. NaN when fewer
 /// than two samples stay within 10 % of the peak deviator.
-double axial_dilatancy_deg(const FitTarget &t, double E, double nu)
+double axial_dilatancy_deg(const FitTarget &t, double E, double nu, const HookeMeasures &m)
 {
   const auto &s = t.response.samples;
   std::size_t peak = 0;
@@ -105,11 +117,12 @@ double axial_dilatancy_deg(const FitTarget &t, double E, double nu)
   std::vector<double> x, y;
   auto add = [&](std::size_t i) {
     const ResponseSample &a = s[t.samples[i]];
-    const Tensor3 ds = a.stress - s[0].stress;
+    const Tensor3 ds = m.stress(a) - m.stress(s[0]);
     const Tensor3 elastic = ((1.0 + nu) * ds - nu * ds.trace() * Tensor3::Identity()) / E;
-    x.push_back(-(a.strain(2, 2) - s[0].strain(2, 2) - elastic(2, 2)));
-    // tr(eps), the small-strain volume change the flow rule speaks of (not det(I + eps) - 1).
-    y.push_back((a.strain - s[0].strain).trace() - elastic.trace());
+    const Tensor3 de = m.strain(a) - m.strain(s[0]);
+    x.push_back(-(de(2, 2) - elastic(2, 2)));
+    // tr of the strain the flow rule speaks of (not det(I + eps) - 1 at small strain).
+    y.push_back(de.trace() - elastic.trace());
   };
   for (std::size_t i = peak; i < t.samples.size() && deviator(s[t.samples[i]].stress) >= 0.9 * q_peak; ++i)
     add(i);
@@ -135,13 +148,14 @@ StartingValues closed_form_start(const ContinuumParameters &base, const std::vec
 {
   StartingValues out{base, {}};
   ContinuumParameters &p = out.parameters;
+  const HookeMeasures measures{base.kinematics != "small strain"};
   std::vector<double> E_axial, G_shear, nus, psis, E_unload, nu_unload, G_unload;
   std::size_t unloading_branches = 0;
   std::vector<const FitTarget *> axial_targets;
   std::vector<std::pair<double, double>> peaks; // (sigma_3, sigma_1), compression positive
   double phi_single = std::nan("");
   for (const auto &t : targets) {
-    const Elasticity unload = unloading_elasticity(t.response);
+    const Elasticity unload = unloading_elasticity(t.response, measures);
     unloading_branches += unload.branches;
     if (std::isfinite(unload.E) && unload.nu > -1.0 && unload.nu < 0.5) {
       E_unload.push_back(unload.E);
@@ -240,7 +254,7 @@ StartingValues closed_form_start(const ContinuumParameters &base, const std::vec
   // psi from the plastic volumetric slope at the peak of the axial curves (needs E, nu).
   std::vector<double> axial_psis;
   for (const FitTarget *t : axial_targets) {
-    const double psi = axial_dilatancy_deg(*t, p.youngs_modulus, p.poisson_ratio);
+    const double psi = axial_dilatancy_deg(*t, p.youngs_modulus, p.poisson_ratio, measures);
     if (std::isfinite(psi))
       axial_psis.push_back(psi);
   }
