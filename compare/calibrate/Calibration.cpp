@@ -1,5 +1,6 @@
 #include "compare/calibrate/Calibration.h"
 
+#include "compare/calibrate/PlasticReach.h"
 #include "continuum/driver/CaseMaterial.h"
 
 #include <ceres/ceres.h>
@@ -193,6 +194,11 @@ CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<
   for (std::size_t i = 0; i < n; ++i)
     out.value[i] = functor.scale[i] * x[i];
   out.calibrated = free.apply(start, out.value);
+  const FreeParameters every = FreeParameters::all(start);
+  const std::vector<double> every_value = every.values(start);
+  for (std::size_t i = 0; i < every.size(); ++i)
+    if (!free.contains(every.list()[i].name))
+      out.fixed.push_back({every.list()[i].name, every_value[i]});
 
   if (!jacobian(*cost, x, m, J))
     throw std::runtime_error("calibration: the material point fails at the solution");
@@ -243,6 +249,7 @@ CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<
     }
     out.residual_summary.push_back(std::move(rows));
   }
+  out.warnings = unconstrained_strength(out.parameters, out.calibrated, out.fitted);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

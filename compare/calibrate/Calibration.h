@@ -36,9 +36,16 @@ struct ResidualSummary {
   std::vector<double> values; ///< per fitted sample of the target
 };
 
+/// A parameter of the continuum section the calibration leaves as the case has it.
+struct FixedParameter {
+  std::string name;
+  double value = 0.0;
+};
+
 struct CalibrationResult {
   std::vector<FreeParameter> parameters;
   std::vector<double> start, value, standard_error;
+  std::vector<FixedParameter> fixed;  ///< every other parameter (E, nu, table knots), with its value
   Eigen::MatrixXd correlation;
   ContinuumParameters calibrated;
   std::vector<Response> fitted;      ///< the material point with the calibrated values, per target
@@ -50,6 +57,8 @@ struct CalibrationResult {
   double seconds = 0.0;
   std::string summary;               ///< Ceres' brief report
   std::vector<std::string> notes;    ///< starting values and the like
+  /// Free parameters the fitted curves cannot constrain (unconstrained_parameters()).
+  std::vector<std::string> warnings;
 };
 
 /// Fits the free parameters of `start` (already the starting values) to the targets.

@@ -7,6 +7,7 @@
 #include "compare/JsonString.h"
 #include "compare/Metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -85,7 +86,11 @@ std::string fit_json(const CalibrationResult &r, const std::vector<FitTarget> &t
          << ", \"value\": " << num(r.value[i]) << ", \"standard_error\": " << num(r.standard_error[i])
          << ", \"lower\": " << num(r.parameters[i].lower) << ", \"upper\": " << num(r.parameters[i].upper) << "}"
          << (i + 1 < n ? ",\n" : "\n");
-  json << "  ],\n  \"correlation\": [";
+  json << "  ],\n  \"fixed\": [";
+  for (std::size_t i = 0; i < r.fixed.size(); ++i)
+    json << (i ? ", " : "") << "{\"name\": " << json_string(r.fixed[i].name) << ", \"value\": " << num(r.fixed[i].value)
+         << "}";
+  json << "],\n  \"correlation\": [";
   for (std::size_t i = 0; i < n; ++i) {
     json << (i ? ", " : "") << "[";
     for (std::size_t j = 0; j < n; ++j)
@@ -112,7 +117,10 @@ std::string fit_json(const CalibrationResult &r, const std::vector<FitTarget> &t
          << ", \"max_q_cube_vs_target\": " << num(verification[k].cube_vs_target, 6)
          << ", \"max_q_point_vs_target\": " << num(verification[k].point_vs_target, 6)
          << ", \"cube_seconds\": " << num(verification[k].seconds, 4) << "}";
-  json << (verification.empty() ? "" : "\n  ") << "],\n  \"notes\": [";
+  json << (verification.empty() ? "" : "\n  ") << "],\n  \"warnings\": [";
+  for (std::size_t k = 0; k < r.warnings.size(); ++k)
+    json << (k ? ", " : "") << json_string(r.warnings[k]);
+  json << "],\n  \"notes\": [";
   for (std::size_t k = 0; k < r.notes.size(); ++k)
     json << (k ? ", " : "") << json_string(r.notes[k]);
   json << "]\n}\n";
@@ -196,14 +204,24 @@ std::string fit_html(const CalibrationResult &r, const std::vector<FitTarget> &t
        << fitted_names(r) << ", " << r.residuals << " residuals, " << r.iterations
        << " Levenberg-Marquardt iterations, " << num(r.seconds, 3) << " s. Cost " << num(r.initial_cost, 6)
        << " &rarr; " << num(r.final_cost, 6) << ". Units: Pa and degrees. "
-       << "Standard errors from the Jacobian covariance scaled by the residual variance. Numbers also in "
+       << "Standard errors from the Jacobian covariance scaled by the residual variance; the parameters the "
+          "calibration does not free keep the case's values (fixed). Numbers also in "
           "<a href=\"fit.json\">fit.json</a>.</p>\n"
        << "<table><tr><th>parameter</th><th>start</th><th>calibrated</th><th>standard error</th><th>bounds</th></tr>\n";
   for (std::size_t i = 0; i < n; ++i)
     html << "<tr><th>" << r.parameters[i].name << "</th><td>" << num(r.start[i], 6) << "</td><td>"
          << num(r.value[i], 6) << "</td><td>" << num(r.standard_error[i], 3) << "</td><td>["
          << num(r.parameters[i].lower, 3) << ", " << num(r.parameters[i].upper, 3) << "]</td></tr>\n";
-  html << "</table>\n<h2>Correlations</h2>\n<table><tr><th></th>";
+  for (const FixedParameter &f : r.fixed)
+    html << "<tr><th>" << f.name << "</th><td>" << num(f.value, 6) << "</td><td>" << num(f.value, 6)
+         << "</td><td>fixed</td><td>&mdash;</td></tr>\n";
+  html << "</table>\n";
+  if (!r.warnings.empty()) {
+    html << "<h2>Warnings</h2>\n";
+    for (const auto &w : r.warnings)
+      html << "<p><strong>" << html_text(w) << "</strong></p>\n";
+  }
+  html << "<h2>Correlations</h2>\n<table><tr><th></th>";
   for (std::size_t j = 0; j < n; ++j)
     html << "<th>" << r.parameters[j].name << "</th>";
   html << "</tr>\n";
@@ -257,14 +275,15 @@ void write_folder(const fs::path &dir, const std::string &fragment_name, const C
                   const std::vector<FitTarget> &targets, const std::string &case_file,
                   const std::vector<Verification> &verification)
 {
-  write_text(dir / fragment_name,
-             continuum_fragment(r.calibrated, "calibrated by `geocomp calibrate " + case_file + "` (" +
-                                                std::to_string(targets.size()) + " target curves)"));
+  write_text(dir / fragment_name, calibrated_fragment(r, "calibrated by `geocomp calibrate " + case_file + "` (" +
+                                                           std::to_string(targets.size()) + " target curves)"));
   std::ostringstream tsv;
-  tsv << "# name\tstart\tvalue\tstandard_error\n";
+  tsv << "# name\tstart\tvalue\tstandard_error (\"fixed\": not calibrated, the case's value)\n";
   for (std::size_t i = 0; i < r.parameters.size(); ++i)
     tsv << r.parameters[i].name << '\t' << num(r.start[i]) << '\t' << num(r.value[i]) << '\t'
         << num(r.standard_error[i]) << '\n';
+  for (const FixedParameter &f : r.fixed)
+    tsv << f.name << '\t' << num(f.value) << '\t' << num(f.value) << "\tfixed\n";
   write_text(dir / "parameters.tsv", tsv.str());
   write_text(dir / "fit.json", fit_json(r, targets, case_file, verification));
   const bool plots = write_plots(dir, r, targets);
@@ -272,18 +291,59 @@ void write_folder(const fs::path &dir, const std::string &fragment_name, const C
 }
 } // namespace
 
+namespace {
+/// The entries of `p` whose family is in `families` ("E", "nu", "cohesion", "friction",
+/// "dilatancy") as a continuum subsection, after one comment line per `comments` (a line
+/// break in one, from a file name, would end the comment and start a statement: written
+/// as a space).
+std::string fragment(const ContinuumParameters &p, const std::vector<std::string> &comments,
+                     const std::vector<std::string> &families)
+{
+  auto has = [&](const char *f) { return std::find(families.begin(), families.end(), f) != families.end(); };
+  std::ostringstream o;
+  for (std::string line : comments) {
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    std::replace(line.begin(), line.end(), '\r', ' ');
+    o << "# " << line << "\n";
+  }
+  o << "subsection continuum\n";
+  if (has("E"))
+    o << "  set youngs modulus  = " << num(p.youngs_modulus) << "\n";
+  if (has("nu"))
+    o << "  set poisson ratio   = " << num(p.poisson_ratio) << "\n";
+  if (has("cohesion"))
+    o << "  set cohesion        = " << table_text(p.cohesion) << "\n";
+  if (has("friction"))
+    o << "  set friction angle  = " << table_text(p.friction_angle) << "\n";
+  if (has("dilatancy"))
+    o << "  set dilatancy angle = " << table_text(p.dilatancy_angle) << "\n";
+  o << "end\n";
+  return o.str();
+}
+
+/// The family of a parameter name: "friction[1]" -> "friction".
+std::string family_of(const std::string &name) { return name.substr(0, name.find('[')); }
+} // namespace
+
 std::string continuum_fragment(const ContinuumParameters &p, const std::string &comment)
 {
-  std::ostringstream o;
-  o << "# " << comment << "\n"
-    << "subsection continuum\n"
-    << "  set youngs modulus  = " << num(p.youngs_modulus) << "\n"
-    << "  set poisson ratio   = " << num(p.poisson_ratio) << "\n"
-    << "  set cohesion        = " << table_text(p.cohesion) << "\n"
-    << "  set friction angle  = " << table_text(p.friction_angle) << "\n"
-    << "  set dilatancy angle = " << table_text(p.dilatancy_angle) << "\n"
-    << "end\n";
-  return o.str();
+  return fragment(p, {comment}, {"E", "nu", "cohesion", "friction", "dilatancy"});
+}
+
+std::string calibrated_fragment(const CalibrationResult &r, const std::string &comment)
+{
+  std::vector<std::string> families;
+  for (const FreeParameter &p : r.parameters)
+    if (std::find(families.begin(), families.end(), family_of(p.name)) == families.end())
+      families.push_back(family_of(p.name));
+  std::string kept;
+  for (const FixedParameter &f : r.fixed)
+    if (std::find(families.begin(), families.end(), family_of(f.name)) != families.end())
+      kept += (kept.empty() ? "" : ", ") + f.name;
+  return fragment(r.calibrated,
+                  {comment, "only the entries that hold a calibrated parameter" +
+                              (kept.empty() ? std::string() : " (" + kept + " in them: the case's values, not calibrated)")},
+                  families);
 }
 
 void write_fit_report(const fs::path &dir, const std::string &fragment_name, const CalibrationResult &r,
@@ -315,7 +375,7 @@ std::vector<std::pair<std::string, std::string>> read_parameter_table(const fs::
     std::string name, start, value, error;
     if (std::getline(s, name, '\t') && std::getline(s, start, '\t') && std::getline(s, value, '\t') &&
         std::getline(s, error, '\t'))
-      rows.emplace_back(name, value + (error == "null" ? "" : " +- " + error));
+      rows.emplace_back(name, value + (error == "null" ? "" : error == "fixed" ? " (fixed)" : " +- " + error));
   }
   return rows;
 }

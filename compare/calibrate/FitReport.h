@@ -35,6 +35,10 @@ struct Verification {
 
 /// The continuum section of `p` as a .prm fragment.
 std::string continuum_fragment(const ContinuumParameters &p, const std::string &comment);
+/// The calibrated section as written back: only the entries that hold a free parameter
+/// (E, nu, a table with a free knot - whole, its other knots as the case has them), so
+/// that a case including it changes nothing the calibration did not fit.
+std::string calibrated_fragment(const CalibrationResult &result, const std::string &comment);
 
 void write_fit_report(const std::filesystem::path &dir, const std::string &fragment_name,
                       const CalibrationResult &result, const std::vector<FitTarget> &targets,

@@ -78,6 +78,20 @@ FreeParameters::FreeParameters(const ContinuumParameters &base, const Calibratio
     throw CalibrationError("free parameters", "no free parameter: nothing to calibrate");
 }
 
+FreeParameters FreeParameters::all(const ContinuumParameters &p)
+{
+  CalibrationParameters every;
+  every.free_parameters.clear();
+  for (const FamilyInfo &f : families)
+    every.free_parameters.push_back(f.name);
+  return FreeParameters(p, every);
+}
+
+bool FreeParameters::contains(const std::string &name) const
+{
+  return std::any_of(list_.begin(), list_.end(), [&](const FreeParameter &p) { return p.name == name; });
+}
+
 std::vector<double> FreeParameters::values(const ContinuumParameters &p) const
 {
   std::vector<double> v;

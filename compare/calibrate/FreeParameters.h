@@ -35,6 +35,11 @@ public:
   /// knot that the table does not have).
   FreeParameters(const ContinuumParameters &base, const CalibrationParameters &c);
 
+  /// Every parameter a calibration of `p` can free: E, nu and each knot of the tables.
+  static FreeParameters all(const ContinuumParameters &p);
+  /// Whether a parameter of that name is among these.
+  bool contains(const std::string &name) const;
+
   const std::vector<FreeParameter> &list() const { return list_; }
   std::size_t size() const { return list_.size(); }
   /// The free values of a continuum section.

@@ -269,4 +269,24 @@ StartingValues closed_form_start(const ContinuumParameters &base, const std::vec
   return out;
 }
 
+StartingValues starting_values(const ContinuumParameters &case_section, const std::vector<FitTarget> &targets,
+                               const CalibrationParameters &options)
+{
+  const FreeParameters free(case_section, options);
+  if (options.starting_values != "closed-form")
+    return {case_section, {"starting values: the case's"}};
+  const StartingValues estimates = closed_form_start(case_section, targets);
+  StartingValues out{free.apply(case_section, free.values(estimates.parameters)), {}};
+  for (const auto &note : estimates.notes)
+    out.notes.push_back("closed-form estimate (the start of the free parameters only): " + note);
+  std::string fixed;
+  const FreeParameters every = FreeParameters::all(case_section);
+  for (const FreeParameter &p : every.list())
+    if (!free.contains(p.name))
+      fixed += (fixed.empty() ? "" : ", ") + p.name;
+  if (!fixed.empty())
+    out.notes.push_back("fixed at the case's values: " + fixed);
+  return out;
+}
+
 } // namespace geocomp::calibration

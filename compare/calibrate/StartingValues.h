@@ -17,11 +17,14 @@
 //    on isochoric curves the metrics' sin psi = d eps_v^p / d gamma^p (docs/metrics.md).
 // The tables keep their shape: each is scaled so that its largest knot takes the estimate.
 // Estimates that the targets cannot give (no axial curve for nu, no finite dilatancy)
-// leave the case's values.
+// leave the case's values. starting_values() takes from these estimates the free
+// parameters only: what the calibration does not free keeps the case's value, in the
+// start and so in the calibrated section.
 #pragma once
 
 #include "common/case/CaseParameters.h"
 #include "compare/calibrate/FitTarget.h"
+#include "compare/calibrate/FreeParameters.h"
 
 #include <string>
 #include <vector>
@@ -34,5 +37,11 @@ struct StartingValues {
 };
 
 StartingValues closed_form_start(const ContinuumParameters &base, const std::vector<FitTarget> &targets);
+
+/// Where the fit starts: the case's continuum section with each free parameter (`options`)
+/// set to its closed-form estimate (`starting values = closed-form`) or left as the case
+/// has it (`case`); every other parameter keeps the case's value.
+StartingValues starting_values(const ContinuumParameters &case_section, const std::vector<FitTarget> &targets,
+                               const CalibrationParameters &options);
 
 } // namespace geocomp::calibration

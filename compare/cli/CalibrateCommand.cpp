@@ -118,20 +118,18 @@ Command calibrate_command()
       return static_cast<int>(bad_input);
     }
     try {
-      ContinuumParameters start = c.continuum;
-      std::vector<std::string> notes;
-      if (c.calibration.starting_values == "closed-form") {
-        StartingValues s = closed_form_start(c.continuum, targets);
-        start = s.parameters;
-        notes = s.notes;
-      }
-      CalibrationResult r = calibrate(start, targets, c.calibration);
-      r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
+      const StartingValues start = starting_values(c.continuum, targets, c.calibration);
+      CalibrationResult r = calibrate(start.parameters, targets, c.calibration);
+      r.notes.insert(r.notes.begin(), start.notes.begin(), start.notes.end());
       std::cout << "calibrate: " << r.iterations << " iterations, " << r.seconds << " s, cost " << r.initial_cost
                 << " -> " << r.final_cost << "\n";
       for (std::size_t i = 0; i < r.parameters.size(); ++i)
         std::cout << "  " << r.parameters[i].name << " = " << r.value[i] << " +- " << r.standard_error[i]
                   << "  (start " << r.start[i] << ")\n";
+      for (const FixedParameter &f : r.fixed)
+        std::cout << "  " << f.name << " = " << f.value << "  (fixed: the case's value)\n";
+      for (const auto &w : r.warnings)
+        std::cerr << "warning: " << c.file << ": calibration/free parameters: " << w << "\n";
       std::vector<Verification> verification;
       if (a.has("verify")) {
         ensure_mpi();
