@@ -5,6 +5,7 @@
 //     n=8 degree=1 program=plane-strain|triaxial|isochoric strain=0.02 samples=20
 //     solver=gmres|cg|direct regularization=crack-band|none integration=full|b-bar radius=0.2 factor=0.8
 //     nullspace=rigid-body|translations steps=2 output=DIR verbose=0 localization=200 kpeak=0.002 kres=0.02 phi=30 psi=5
+//     kinematics=finite|small
 #include "common/ProgramRunner.h"
 #include "continuum/fe/CubeEngine.h"
 
@@ -52,6 +53,7 @@ int main(int argc, char **argv)
   cp.near_null_space = get("nullspace", "rigid-body");
   cp.regularization = get("regularization", "crack-band");
   cp.volumetric_integration = get("integration", "full");
+  cp.kinematics = parse_kinematics(get("kinematics", "finite") + " strain");
   cp.imperfection_radius = std::stod(get("radius", "0.2"));
   cp.imperfection_cohesion_factor = std::stod(get("factor", "0.8"));
   cp.imperfection_centre = Vector3(std::stod(get("cx", "0.5")), std::stod(get("cy", "0.5")), std::stod(get("cz", "0.5")));
@@ -102,8 +104,9 @@ int main(int argc, char **argv)
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const CubeStatistics &st = engine.statistics();
   if (root) {
-    std::printf("# n=%u degree=%u dofs=%u ranks=%u h_e=%g\n", cp.cells_per_side, cp.degree, engine.n_dofs(),
-                dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD), engine.element_size());
+    std::printf("# n=%u degree=%u dofs=%u ranks=%u h_e=%g kinematics=%s\n", cp.cells_per_side, cp.degree,
+                engine.n_dofs(), dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD), engine.element_size(),
+                to_string(cp.kinematics));
     std::printf("# time eps_xx eps_yy eps_zz sig_xx sig_yy sig_zz tau_max");
     for (const auto &c : r.extras)
       std::printf(" %s", c.name.c_str());
