@@ -1,21 +1,23 @@
 #!/usr/bin/env bash
 # Builds the unit-test executables that do not need deal.II with AddressSanitizer and
 # UndefinedBehaviorSanitizer into build-asan/ and runs them.
+# GEOCOMP_ASAN_BUILD_DIR picks the build folder (default build-asan).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+build=${GEOCOMP_ASAN_BUILD_DIR:-build-asan}
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # -O1: the sanitizers need no more, and it compiles much faster than Release's -O3.
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1" -DGEOCOMP_SANITIZE=ON "${launcher[@]}" >/dev/null
-cmake --build build-asan --target help > build-asan/targets.txt
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1" -DGEOCOMP_SANITIZE=ON "${launcher[@]}" >/dev/null
+cmake --build "$build" --target help > "$build/targets.txt"
 targets=()
 for t in common_tests dem_tests dem_specimen_tests continuum_model_tests compare_tests; do
-  grep -qE "(^|[ .:])$t(:|$)" build-asan/targets.txt && targets+=("$t")
+  grep -qE "(^|[ .:])$t(:|$)" "$build/targets.txt" && targets+=("$t")
 done
-cmake --build build-asan -j "$(nproc)" --target "${targets[@]}"
+cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 for t in "${targets[@]}"; do
-  exe=$(find "$PWD/build-asan" -type f -name "$t" -perm -u+x | head -1)
+  exe=$(find "$PWD/$build" -type f -name "$t" -perm -u+x | head -1)
   echo "-- $t (sanitized)"
   GEOCOMP_SOURCE_DIR="$PWD" "$exe" --gtest_brief=1
 done

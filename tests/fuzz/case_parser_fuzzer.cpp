@@ -1,5 +1,8 @@
-// libFuzzer target for the case-file reader: any input must either parse or be refused
-// with a CaseError; a crash, a sanitizer report or any other exception is a bug.
+// libFuzzer target for the case-file reader, one syntax per binary (GEOCOMP_FUZZ_EXTENSION:
+// ".prm" or ".json", tests/fuzz/CMakeLists.txt): any input must either parse or be refused
+// with a CaseError; a crash, a stack overflow, a sanitizer report, a hang or any other
+// exception is a bug. `include` lines are followed as in a case (relative to the working
+// directory here): the reader's limits and checks apply to what they name.
 #include "common/case/CaseParameters.h"
 
 #include <cstddef>
@@ -8,13 +11,9 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
-  if (size == 0)
-    return 0;
-  // The first byte picks the syntax, the rest is the file.
-  const std::string name = (data[0] & 1) ? "fuzz.json" : "fuzz.prm";
-  const std::string text(reinterpret_cast<const char *>(data + 1), size - 1);
+  const std::string text(reinterpret_cast<const char *>(data), size);
   try {
-    geocomp::parse_case(text, name);
+    geocomp::parse_case(text, std::string("fuzz") + GEOCOMP_FUZZ_EXTENSION);
   } catch (const geocomp::CaseError &) {
   }
   return 0;
