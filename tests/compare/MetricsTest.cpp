@@ -287,3 +287,49 @@ TEST(Metrics, AxialAxisAndSenseComeFromTheProgram)
   const auto table = metric_table(metrics);
   EXPECT_NE(table[5].label.find("sigma_x (tension +)"), std::string::npos) << table[5].label;
 }
+
+// Issue 29's case: a perfectly plastic, non-dilatant Mohr-Coulomb point (E 100 MPa, nu 0.25,
+// c 10 kPa, phi 30 deg, p0 100 kPa) in S0's isochoric shear to gamma_max = 30 %. At finite
+// strain the box is isochoric for the continuum too: the plateau is c cos phi + p0 sin phi
+// and the metrics report no softening. At small strain the box's tr(eps) = e^2/(1 - e) eats
+// the mean stress and the same material "softens".
+TEST(Metrics, PerfectMohrCoulombUnderS0IsochoricShearShowsNoSofteningAtFiniteStrain)
+{
+  const double p0 = 1e5, c = 10e3, phi = 30.0 / deg;
+  continuum::MaterialParameters m;
+  m.mohr_coulomb.youngs_modulus = 100e6;
+  m.mohr_coulomb.poisson_ratio = 0.25;
+  m.mohr_coulomb.cohesion = continuum::PiecewiseLinear(c);
+  m.mohr_coulomb.friction_angle = continuum::PiecewiseLinear(phi);
+  m.mohr_coulomb.dilatancy_angle = continuum::PiecewiseLinear(0.0);
+  LoadingProgram program;
+  program.sample_interval = 0.02;
+  Stage s;
+  s.name = "isochoric";
+  s.isochoric = true;
+  s.isochoric_rate = 0.05;
+  s.stop_any = {parse_condition("gamma_max >= 0.3", "test")};
+  s.max_duration = 100;
+  program.stages = {s};
+  MetricOptions o;
+  o.kind = curve_kind_for(program);
+  MetricSet at[2];
+  for (const auto kinematics : {continuum::Kinematics::finite_strain, continuum::Kinematics::small_strain}) {
+    continuum::MaterialPointParameters mp;
+    mp.initial_stress = -p0;
+    mp.kinematics = kinematics;
+    continuum::MaterialPointEngine engine(m, mp);
+    at[kinematics == continuum::Kinematics::small_strain] = compute_metrics(ProgramRunner(program, engine).run(), o);
+  }
+  const MetricSet &finite = at[0], &small = at[1];
+  EXPECT_NEAR(finite.peak_stress / (c * std::cos(phi) + p0 * std::sin(phi)), 1.0, 1e-8);
+  EXPECT_TRUE(std::isnan(finite.softening_modulus));
+  EXPECT_NEAR(finite.residual_stress / finite.peak_stress, 1.0, 1e-8);
+  bool said = false;
+  for (const auto &n : finite.notes)
+    said = said || n.find("no softening") != std::string::npos || n.find("last sample") != std::string::npos;
+  EXPECT_TRUE(said);
+  EXPECT_LT(small.softening_modulus, 0.0); // the small-strain artefact the finite strain removes
+  std::printf("isochoric perfect MC: finite strain peak %.6g Pa, no softening; small strain softening modulus %.3g MPa\n",
+              finite.peak_stress, small.softening_modulus * 1e-6);
+}
