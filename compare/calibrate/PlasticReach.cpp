@@ -15,13 +15,6 @@ const HardeningTable &table_of(const ContinuumParameters &p, FreeParameter::Fami
                                                  : p.dilatancy_angle;
 }
 
-std::string str(double v)
-{
-  std::ostringstream o;
-  o.precision(3);
-  o << v;
-  return o.str();
-}
 } // namespace
 
 std::vector<std::string> unconstrained_strength(const std::vector<FreeParameter> &free,
@@ -58,11 +51,16 @@ std::vector<std::string> unconstrained_strength(const std::vector<FreeParameter>
     if (intervals >= min_intervals)
       continue;
     std::ostringstream w;
+    w.precision(3);
     w << p.name << ": the calibrated material point flows plastically in " << intervals
-      << (intervals == 1 ? " sample interval" : " sample intervals") << " within this knot's reach (kappa "
-      << (k == 0 ? std::string("from the onset of yield") : "above " + str(lower))
-      << (k + 1 == knots.size() ? "" : " and below " + str(upper)) << "; the targets reach kappa = " << str(kappa_max)
-      << "), so the targets cannot constrain it: its value and standard error bound the strength rather than "
+      << (intervals == 1 ? " sample interval" : " sample intervals") << " within this knot's reach (kappa ";
+    if (k == 0)
+      w << "from the onset of yield";
+    else
+      w << "above " << lower;
+    if (k + 1 < knots.size())
+      w << " and below " << upper;
+    w << "; the targets reach kappa = " << kappa_max << "), so the targets cannot constrain it: its value and standard error bound the strength rather than "
          "measure it. Fix it, or add a target that yields there (a longer path, another confinement).";
     warnings.push_back(w.str());
   }

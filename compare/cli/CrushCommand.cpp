@@ -1,6 +1,7 @@
 // `geocomp crush`: S2's particle-breakage programs (single-particle crushing, uniaxial
 // compression with cube, 4-ball or 18-ball fragment replacement).
 #include "Commands.h"
+#include "OutputFolderLock.h"
 
 #include "common/AtomicFile.h"
 #include "dem/program/CrushCase.h"
@@ -47,8 +48,9 @@ Command crush_command()
     }
     const std::string dir = a.get("output", cc.output_directory);
     const std::string stem = std::filesystem::path(cc.file).stem().string();
+    // Locked for this run; a path that cannot be a folder is bad input (CaseError: exit 2).
+    const OutputFolderLock lock(dir, cc.file, a.has("output") ? "--output" : "output/directory");
     try {
-      std::filesystem::create_directories(dir);
       const dem::CrushResults r =
         dem::run_crush(cc.setup, [](const std::string &line) { std::cout << line << std::endl; });
       const auto base = std::filesystem::path(dir) / stem;

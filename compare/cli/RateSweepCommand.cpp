@@ -1,5 +1,6 @@
 // `geocomp rate-sweep`: S1's dynamic uniaxial tests over a range of strain rates.
 #include "Commands.h"
+#include "OutputFolderLock.h"
 
 #include "continuum/dynamics/RateSweepCase.h"
 #include "continuum/dynamics/RateSweepOutput.h"
@@ -43,8 +44,9 @@ Command rate_sweep_command()
     }
     const std::string dir = a.get("output", rc.output_directory);
     const std::string stem = std::filesystem::path(rc.file).stem().string();
+    // Locked for this run; a path that cannot be a folder is bad input (CaseError: exit 2).
+    const OutputFolderLock lock(dir, rc.file, a.has("output") ? "--output" : "output/directory");
     try {
-      std::filesystem::create_directories(dir);
       std::printf("%-7s %10s %10s %10s %8s %10s %8s\n", "kinetic", "rate[1/s]", "strength", "S1 fit", "error",
                   "no-inertia", "steps");
       const auto rows = dynamics::run_rate_sweep(rc.setup, [](const dynamics::RateSweepRow &r) {

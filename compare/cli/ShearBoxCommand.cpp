@@ -8,6 +8,7 @@
 // <DIR>/<case>.tsv (one row per output step, compression positive) and
 // <DIR>/<case>-summary.txt (peak mu_b, max contraction, final dilation, costs).
 #include "Commands.h"
+#include "OutputFolderLock.h"
 
 #include "common/case/CaseParameters.h"
 #include "common/case/ParseParameters.h"
@@ -257,8 +258,9 @@ Command shear_box_command()
     }
     const std::string dir = a.get("output", sc.output_directory);
     const std::string stem = std::filesystem::path(sc.file).stem().string();
+    // Locked for this run; a path that cannot be a folder is bad input (CaseError: exit 2).
+    const OutputFolderLock lock(dir, sc.file, a.has("output") ? "--output" : "output/directory");
     try {
-      std::filesystem::create_directories(dir);
       dem::DirectShearBox box(sc.p);
       std::string last;
       auto progress = [&](const std::string& phase, double) {

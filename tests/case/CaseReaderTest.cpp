@@ -4,6 +4,7 @@
 // a crash, a hang or a read without end.
 #include "common/case/CaseParameters.h"
 #include "common/case/InputLimits.h"
+#include "tests/common/ScratchFolder.h"
 
 #include <gtest/gtest.h>
 
@@ -23,16 +24,9 @@ namespace {
 const std::string program = "subsection program\n  subsection stage 1\n    set z = rate -1\n"
                             "    set stop when = eps_zz <= -0.01\n    set max duration = 1\n  end\nend\n";
 
-/// A fresh folder for one test's files, removed afterwards.
-struct Folder {
-  fs::path dir;
-  explicit Folder(const std::string &name)
-    : dir(fs::temp_directory_path() / ("geocomp-case-" + name + "-" + std::to_string(::getpid())))
-  {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Folder() { fs::remove_all(dir); }
+/// A fresh folder for one test's files, removed afterwards, and a way to write them.
+struct Folder : geocomp::test::ScratchFolder {
+  explicit Folder(const std::string &name) : ScratchFolder("case-" + name) {}
   fs::path write(const std::string &name, const std::string &text) const
   {
     fs::create_directories((dir / name).parent_path());

@@ -3,6 +3,7 @@
 // Every command that reads a case refuses each one at once - no hang, no crash, no read
 // without end: exit code 2, the file named, nothing written.
 #include "tests/common/CommandRun.h"
+#include "tests/common/ScratchFolder.h"
 
 #include <gtest/gtest.h>
 
@@ -14,20 +15,9 @@
 
 namespace fs = std::filesystem;
 using geocomp::test::run_program;
+using Scratch = geocomp::test::ScratchFolder;
 
 namespace {
-/// A fresh folder, removed afterwards.
-struct Scratch {
-  fs::path dir;
-  explicit Scratch(const std::string &name)
-    : dir(fs::temp_directory_path() / ("geocomp-hostile-" + name + "-" + std::to_string(::getpid())))
-  {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() { fs::remove_all(dir); }
-};
-
 std::size_t entries(const fs::path &dir)
 {
   std::size_t n = 0;
@@ -42,7 +32,7 @@ const char *const commands[] = {"check", "dem",      "continuum", "material-poin
 
 TEST(HostileInput, EveryCommandRefusesAFifoADeviceAndAFolderAtOnceNamingThemAndWritingNothing)
 {
-  const Scratch s("special");
+  const Scratch s("hostile-special");
   const fs::path fifo = s.dir / "inputs" / "pipe.prm", folder = s.dir / "inputs" / "folder.prm";
   fs::create_directories(folder);
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
@@ -60,7 +50,7 @@ TEST(HostileInput, EveryCommandRefusesAFifoADeviceAndAFolderAtOnceNamingThemAndW
 
 TEST(HostileInput, HundredThousandNestedBracketsATwoMebibyteCaseAndAFiftyMegabyteTitleAreRefused)
 {
-  const Scratch s("large");
+  const Scratch s("hostile-large");
   const fs::path brackets = s.dir / "brackets.json", big = s.dir / "big.prm", title = s.dir / "title.prm";
   std::ofstream(brackets) << std::string(100000, '[') << std::string(100000, ']');
   {

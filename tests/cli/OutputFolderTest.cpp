@@ -3,6 +3,7 @@
 // folder is bad input, and a folder name holding quotes, spaces, `$()`, back quotes or ';'
 // is only a name - results, report and plots land in it and no command runs.
 #include "tests/common/CommandRun.h"
+#include "tests/common/ScratchFolder.h"
 
 #include <gtest/gtest.h>
 
@@ -16,19 +17,9 @@
 
 namespace fs = std::filesystem;
 using geocomp::test::run_program;
+using Scratch = geocomp::test::ScratchFolder;
 
 namespace {
-struct Scratch {
-  fs::path dir;
-  explicit Scratch(const std::string &name)
-    : dir(fs::temp_directory_path() / ("geocomp-output-" + name + "-" + std::to_string(::getpid())))
-  {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() { fs::remove_all(dir); }
-};
-
 /// A material-point case (under a second of run time) whose results go to `output`.
 fs::path write_case(const fs::path &dir, const std::string &output)
 {
@@ -65,7 +56,7 @@ struct HeldLock {
 
 TEST(OutputFolder, ASecondRunIntoALockedFolderExitsTwoNamingTheHolderAndWritesNothing)
 {
-  const Scratch s("locked");
+  const Scratch s("output-locked");
   const fs::path out = s.dir / "results";
   fs::create_directories(out);
   const std::string holder = "process " + std::to_string(::getpid()) + " on test-host: geocomp pair other.prm\n";
@@ -90,7 +81,7 @@ TEST(OutputFolder, ASecondRunIntoALockedFolderExitsTwoNamingTheHolderAndWritesNo
 
 TEST(OutputFolder, AStaleLockOfAProcessThatIsGoneIsTakenOverWithAWarning)
 {
-  const Scratch s("stale");
+  const Scratch s("output-stale");
   const fs::path out = s.dir / "results";
   fs::create_directories(out);
   // Written by a run that was killed: the file stays, its flock went with the process.
@@ -107,7 +98,7 @@ TEST(OutputFolder, AStaleLockOfAProcessThatIsGoneIsTakenOverWithAWarning)
 
 TEST(OutputFolder, AnOutputPathThatIsAFileOrCannotBeCreatedIsBadInputExitTwo)
 {
-  const Scratch s("path");
+  const Scratch s("output-path");
   const fs::path file = s.dir / "a-file";
   std::ofstream(file) << "not a folder\n";
   const fs::path c = write_case(s.dir, file.string());
@@ -122,11 +113,22 @@ TEST(OutputFolder, AnOutputPathThatIsAFileOrCannotBeCreatedIsBadInputExitTwo)
   EXPECT_EQ(under_file.code, 2) << under_file.err;
   EXPECT_NE(under_file.err.find("parameter '--output'"), std::string::npos) << under_file.err;
   EXPECT_EQ(std::ifstream(file).get(), 'n') << "the file is left as it was";
+  // The commands with case formats of their own: refused before they run.
+  const fs::path cases = fs::path(std::getenv("GEOCOMP_SOURCE_DIR") ? std::getenv("GEOCOMP_SOURCE_DIR") : ".") / "cases";
+  for (const auto &[command, shipped] : {std::pair<std::string, std::string>{"crush", "s2_single_particle.prm"},
+                                         {"rate-sweep", "s1_concrete_compression.prm"},
+                                         {"shear-box", "s4_direct_shear_100kPa.prm"}}) {
+    const auto r = run_program({GEOCOMP_EXE, command, fs::absolute(cases / shipped).string(), "--output", file.string()},
+                               s.dir);
+    EXPECT_EQ(r.code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("parameter '--output': '" + file.string() + "' exists and is not a folder"), std::string::npos)
+      << command << ": " << r.err;
+  }
 }
 
 TEST(OutputFolder, QuotesSpacesDollarParenBackQuotesAndSemicolonsInTheFolderNameRunNothing)
 {
-  const Scratch s("shell");
+  const Scratch s("output-shell");
   // The second name closes the quotes a shell command line would have put around it.
   for (const std::string name : {"it's a \"run\" $(touch pwned1); touch pwned2 `touch pwned3` & touch pwned4",
                                  "a'; touch pwned5; echo '"}) {
