@@ -30,6 +30,9 @@ public:
   virtual void advance_to(double t_end) = 0;
   /// Current time, strain, stress and extras (stage/branch are filled by the runner).
   virtual ResponseSample measure() = 0;
+  /// True when measure() fills ResponseSample::stress_mean with the mean stress since the
+  /// previous measure(); otherwise the runner copies the instantaneous stress there.
+  virtual bool gives_interval_means() const { return false; }
   virtual std::unique_ptr<EngineState> save() const = 0;
   virtual void restore(const EngineState &state) = 0;
 

@@ -91,6 +91,65 @@ bool Stage::has_stress_axis() const
   return false;
 }
 
+namespace {
+/// Why stop condition `c` of `stage` can never hold, or "" if it can. `first`: the stage
+/// starts the program (time and strains 0, known), so the direction of a kinematic axis
+/// decides. Later stages start where the previous one ended, unknown here: only what no
+/// start can change is checked (sign-definite quantities, stage time).
+std::string never_holds(const Condition &c, const Stage &stage, bool first)
+{
+  const double v = c.value;
+  switch (c.quantity) {
+  case Quantity::GammaMax:
+  case Quantity::TauMax:
+  case Quantity::ServoError:
+  case Quantity::PeakDrop:
+  case Quantity::Time:
+  case Quantity::StageTime:
+    if (!c.at_least && v < 0.0)
+      return "this quantity is never negative";
+    if (c.quantity == Quantity::PeakDrop && c.at_least && v > 1.0)
+      return "peak_drop is at most 1 (tau_max back to zero)";
+    if (c.quantity == Quantity::StageTime && c.at_least && v > stage.max_duration)
+      return "the stage ends on its max duration (" + std::to_string(stage.max_duration) + " s) before";
+    if (c.quantity == Quantity::Time && first && c.at_least && v > stage.max_duration)
+      return "the first stage ends on its max duration (" + std::to_string(stage.max_duration) + " s) before";
+    return "";
+  default:
+    break;
+  }
+  if (!first)
+    return "";
+  // The first stage: strains start at 0 and a kinematic axis moves one way.
+  int axis = -1;
+  if (c.quantity == Quantity::EpsXX)
+    axis = 0;
+  else if (c.quantity == Quantity::EpsYY)
+    axis = 1;
+  else if (c.quantity == Quantity::EpsZZ)
+    axis = 2;
+  if (c.quantity == Quantity::VolumetricStrain && stage.isochoric && ((c.at_least && v > 0.0) || (!c.at_least && v < 0.0)))
+    return "the isochoric program keeps the volume (eps_vol = 0)";
+  if (axis < 0 || !stage.kinematic(axis))
+    return "";
+  StageControl control;
+  control.stage = &stage;
+  const double rate = control.strain_rate(axis, 0.0);
+  // The strain moves from 0 in the direction of its rate (S0 eq. (3): z lengthens).
+  const bool moves_up = rate > 0.0 || (stage.isochoric && axis == 2);
+  const bool moves_down = rate < 0.0;
+  if (c.at_least && v > 0.0 && !moves_up)
+    return "the strain starts at 0 and this axis does not lengthen";
+  if (!c.at_least && v < 0.0 && !moves_down)
+    return "the strain starts at 0 and this axis does not shorten";
+  const double reached = control.strain(axis, stage.max_duration);
+  if ((c.at_least && v > reached) || (!c.at_least && v < reached))
+    return "the axis reaches only " + std::to_string(reached) + " within the stage's max duration (" +
+           std::to_string(stage.max_duration) + " s)";
+  return "";
+}
+} // namespace
+
 void LoadingProgram::validate() const
 {
   if (stages.empty())
@@ -118,6 +177,12 @@ void LoadingProgram::validate() const
       throw ProgramError(w + "/max duration", "expected a positive time in seconds");
     if (s.max_duration < sample_interval)
       throw ProgramError(w + "/max duration", "is shorter than the sampling interval");
+    for (const Condition &c : s.stop_any) {
+      const std::string why = never_holds(c, s, i == 0);
+      if (!why.empty())
+        throw ProgramError(w + "/stop when", "the stop condition '" + c.text + "' can never hold: " + why +
+                                                 "; the stage would end only on its max duration");
+    }
     if (!s.unload_to_start && !(s.unload_to_tau >= 0.0))
       throw ProgramError(w + "/unload to", "expected 'start' or a non-negative tau_max in Pa");
     if (!(s.peak_tolerance > 0.0 && s.peak_tolerance < 1.0))

@@ -44,6 +44,7 @@ std::vector<std::string> get_strings(std::istream &in)
 void put_response(std::ostream &out, const Response &r)
 {
   put_string(out, r.engine);
+  binary::put(out, r.interval_means);
   binary::put<std::uint64_t>(out, r.extras.size());
   for (const ExtraColumn &c : r.extras) {
     put_string(out, c.name);
@@ -55,6 +56,7 @@ void put_response(std::ostream &out, const Response &r)
     binary::put(out, s.time);
     binary::put(out, s.strain);
     binary::put(out, s.stress);
+    binary::put(out, s.stress_mean);
     binary::put(out, s.stage);
     binary::put(out, s.branch);
     binary::put_vector(out, s.extras);
@@ -89,6 +91,7 @@ Response get_response(std::istream &in)
 {
   Response r;
   r.engine = get_string(in);
+  binary::get(in, r.interval_means);
   r.extras.resize(get_count(in));
   for (ExtraColumn &c : r.extras) {
     c.name = get_string(in);
@@ -100,6 +103,7 @@ Response get_response(std::istream &in)
     binary::get(in, s.time);
     binary::get(in, s.strain);
     binary::get(in, s.stress);
+    binary::get(in, s.stress_mean);
     binary::get(in, s.stage);
     binary::get(in, s.branch);
     binary::get_vector(in, s.extras);
@@ -129,7 +133,7 @@ Response get_response(std::istream &in)
 
 void write_runner_state(std::ostream &out, const RunnerState &s)
 {
-  binary::put_tag(out, "GCRUNNER", 1);
+  binary::put_tag(out, "GCRUNNER", 2);
   put_response(out, s.response);
   binary::put_vector(out, s.stage_start_sample);
   binary::put(out, s.stage);
@@ -144,7 +148,7 @@ void write_runner_state(std::ostream &out, const RunnerState &s)
 RunnerState read_runner_state(std::istream &in)
 {
   RunnerState s;
-  binary::expect_tag(in, "GCRUNNER", 1);
+  binary::expect_tag(in, "GCRUNNER", 2);
   s.response = get_response(in);
   binary::get_vector(in, s.stage_start_sample);
   binary::get(in, s.stage);

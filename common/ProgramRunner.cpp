@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 namespace geocomp {
 
@@ -60,6 +61,8 @@ void ProgramRunner::record(ResponseSample s, int stage, int branch, double fract
 {
   s.stage = stage;
   s.branch = branch;
+  if (!response_.interval_means)
+    s.stress_mean = s.stress;
   response_.samples.push_back(std::move(s));
   if (progress_) {
     RunProgress p;
@@ -87,18 +90,55 @@ double steady_seconds()
 }
 } // namespace
 
+namespace {
+/// "stage 2", with the stage's name when it has one of its own: "stage 2 'shear'".
+std::string stage_label(const LoadingProgram &program, int k)
+{
+  const std::string number = "stage " + std::to_string(k + 1);
+  const std::string &name = k < int(program.stages.size()) ? program.stages[k].name : number;
+  return name.empty() || name == number ? number : number + " '" + name + "'";
+}
+} // namespace
+
+ProgramFailed::ProgramFailed(std::string status, Response partial)
+  : std::runtime_error(status), status(std::move(status)), partial(std::move(partial))
+{
+}
+
+template <class Body> void ProgramRunner::failing_safely(Body &&body)
+{
+  try {
+    body();
+  } catch (const ProgramStopped &) {
+    throw;
+  } catch (const std::exception &e) {
+    std::ostringstream where;
+    where << "failed in " << stage_label(program_, stage_);
+    if (branch_ > 0)
+      where << ", unloading branch " << branch_;
+    where << ", after t = " << (response_.samples.empty() ? 0.0 : response_.samples.back().time) << " s: " << e.what();
+    if (int(response_.stage_end_reasons.size()) == stage_)
+      response_.stage_end_reasons.push_back(where.str());
+    throw ProgramFailed(where.str(), std::move(response_));
+  }
+}
+
 Response ProgramRunner::run()
 {
   response_ = Response{};
   stage_start_sample_.clear();
   last_checkpoint_ = steady_seconds();
   response_.engine = engine_.name();
+  response_.interval_means = engine_.gives_interval_means();
   response_.extras = engine_.extra_columns();
   for (const auto &s : program_.stages)
     response_.stage_names.push_back(s.name);
-  record(engine_.measure(), 0, 0, 0.0);
-  for (std::size_t i = 0; i < program_.stages.size(); ++i)
-    run_stage(static_cast<int>(i));
+  stage_ = branch_ = 0;
+  failing_safely([&] {
+    record(engine_.measure(), 0, 0, 0.0);
+    for (std::size_t i = 0; i < program_.stages.size(); ++i)
+      run_stage(static_cast<int>(i));
+  });
   return std::move(response_);
 }
 
@@ -113,9 +153,13 @@ Response ProgramRunner::resume(RunnerState state, std::unique_ptr<EngineState> p
   stage_start_sample_.assign(state.stage_start_sample.begin(), state.stage_start_sample.end());
   last_checkpoint_ = steady_seconds();
   state.response = Response{};
-  run_stage(state.stage, &state, std::move(peak));
-  for (std::size_t i = std::size_t(state.stage) + 1; i < program_.stages.size(); ++i)
-    run_stage(static_cast<int>(i));
+  stage_ = state.stage;
+  branch_ = 0;
+  failing_safely([&] {
+    run_stage(state.stage, &state, std::move(peak));
+    for (std::size_t i = std::size_t(state.stage) + 1; i < program_.stages.size(); ++i)
+      run_stage(static_cast<int>(i));
+  });
   return std::move(response_);
 }
 
@@ -150,6 +194,7 @@ double condition_fraction(const Condition &c, const ResponseSample &start, const
 void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_ptr<EngineState> peak)
 {
   const Stage &stage = program_.stages[index];
+  stage_ = index;
   if (!from)
     stage_start_sample_.push_back(response_.samples.size() - 1);
   const ResponseSample start = response_.samples[stage_start_sample_[index]];
@@ -250,6 +295,7 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
 
   BranchRecord b;
   b.id = static_cast<int>(response_.branches.size()) + 1;
+  branch_ = b.id;
   b.stage = stage_index;
   b.trigger = trigger;
   b.first_sample = from_sample;
@@ -349,6 +395,26 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
 
   engine_.restore(*resume);
   engine_.begin_control(main);
+  branch_ = 0;
+}
+
+std::string completion_status(const Response &r, const LoadingProgram &program)
+{
+  std::ostringstream out;
+  for (std::size_t k = 0; k < r.stage_end_reasons.size() && k < program.stages.size(); ++k) {
+    if (r.stage_end_reasons[k] != "max duration")
+      continue;
+    const Stage &s = program.stages[k];
+    out << (out.tellp() > 0 ? "; " : "") << stage_label(program, int(k)) << " ended on its max duration ("
+        << s.max_duration << " s) before its stop condition";
+    for (std::size_t c = 0; c < s.stop_any.size(); ++c)
+      out << (c == 0 ? " '" : " or '") << s.stop_any[c].text << "'";
+  }
+  for (const BranchRecord &b : r.branches)
+    if (!b.reached_target)
+      out << (out.tellp() > 0 ? "; " : "") << "unloading branch " << b.id << " (" << b.trigger
+          << ") ended before reaching tau_max = " << b.tau_target << " Pa";
+  return out.tellp() > 0 ? out.str() : "complete";
 }
 
 } // namespace geocomp

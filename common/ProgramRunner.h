@@ -52,6 +52,22 @@ struct ProgramStopped : std::runtime_error {
   std::size_t samples;
 };
 
+/// Thrown by run()/resume() when the engine fails mid-run (any exception from it: a DEM
+/// guard, a continuum solver that does not converge...): the samples and branches
+/// recorded so far, the stage under way marked as failed, and where and why (`status`, as
+/// /meta/status of the results file: "failed in stage 2 'shear', branch 1, after
+/// t = 0.0123 s: <the engine's message>"). Callers write `partial` with that status.
+struct ProgramFailed : std::runtime_error {
+  ProgramFailed(std::string status, Response partial);
+  std::string status;
+  Response partial;
+};
+
+/// "complete" when every stage of a finished run ended on one of its stop conditions and
+/// every unloading branch reached its target; otherwise what did not ("stage 1 'load'
+/// ended on its max duration (1 s) before its stop condition 'eps_zz <= -0.1'; ...").
+std::string completion_status(const Response &response, const LoadingProgram &program);
+
 class ProgramRunner {
 public:
   ProgramRunner(const LoadingProgram &program, LoadingEngine &engine);
@@ -71,6 +87,8 @@ private:
   void run_branch(int stage_index, const StageControl &main, const std::string &trigger,
                   std::size_t from_sample, const EngineState *from_state);
   void record(ResponseSample s, int stage, int branch, double fraction);
+  /// Runs `body`; an engine's exception becomes ProgramFailed with the response so far.
+  template <class Body> void failing_safely(Body &&body);
 
   const LoadingProgram &program_;
   LoadingEngine &engine_;
@@ -79,6 +97,7 @@ private:
   std::function<void(const RunProgress &)> progress_;
   CheckpointPolicy checkpoints_;
   double last_checkpoint_ = 0.0; ///< steady-clock seconds
+  int stage_ = 0, branch_ = 0;  ///< where the run is (for ProgramFailed)
 };
 
 } // namespace geocomp

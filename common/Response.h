@@ -2,9 +2,13 @@
 // The Response record: what every engine emits for a loading program.
 //
 // One sample per sampling instant: time, the full engineering strain tensor of the box
-// (relative to the start of the program), the full stress tensor, the stage and the
-// branch it belongs to (0 = main path, k = k-th unloading branch), and named engine
-// extras (DEM: coordination number, inertial number...; FE: Newton iterations...).
+// (relative to the start of the program), the full stress tensor at that instant and its
+// mean over the sampling interval that ends there, the stage and the branch it belongs to
+// (0 = main path, k = k-th unloading branch), and named engine extras (DEM: coordination
+// number, inertial number...; FE: Newton iterations...). A dynamic engine (DEM) averages
+// its stress over every step of the interval, as Yade and LIGGGHTS users compare it; a
+// quasi-static engine's sample is its state, so its mean is the instantaneous stress
+// (Response::interval_means says which).
 // Metrics in compare/ read only this record, so they never depend on the engine.
 #include "common/Tensor.h"
 
@@ -16,7 +20,10 @@ namespace geocomp {
 struct ResponseSample {
   double time = 0.0;
   Tensor3 strain = Tensor3::Zero(); ///< engineering, tension positive
-  Tensor3 stress = Tensor3::Zero(); ///< Cauchy [Pa], tension positive
+  Tensor3 stress = Tensor3::Zero(); ///< Cauchy [Pa], tension positive, at `time`
+  /// Mean of the stress over the sampling interval ending at `time` (time-weighted over
+  /// the engine's steps); the instantaneous stress where the engine gives no mean.
+  Tensor3 stress_mean = Tensor3::Zero();
   int stage = 0;                    ///< 0-based stage index
   int branch = 0;                   ///< 0 main path, k >= 1 unloading branch k
   std::vector<double> extras;       ///< aligned with Response::extras
@@ -44,6 +51,7 @@ struct BranchRecord {
 
 struct Response {
   std::string engine; ///< "dem", "continuum-fe", "material-point", ...
+  bool interval_means = false; ///< stress_mean is a mean over each interval (else a copy of stress)
   std::vector<ExtraColumn> extras;
   std::vector<ResponseSample> samples;
   std::vector<BranchRecord> branches;

@@ -60,6 +60,7 @@ void write_response(const std::filesystem::path &path, const Response &r, RunMet
       if (!meta.kinematics.empty())
         h5::write_attribute(m.id(), "kinematics", meta.kinematics);
       h5::write(m.id(), "case_text", std::vector<std::string>{meta.case_text});
+      h5::write(m.id(), "status", std::vector<std::string>{meta.status});
     }
     const hsize_t n = r.samples.size();
     h5::Handle g = h5::create_group(file.id(), "response");
@@ -71,6 +72,14 @@ void write_response(const std::filesystem::path &path, const Response &r, RunMet
               {n, 3, 3}, "1");
     h5::write(g.id(), "stress", tensors(r, [](const ResponseSample &s) -> Tensor3 { return s.stress; }),
               {n, 3, 3}, "Pa");
+    h5::write(g.id(), "stress_mean", tensors(r, [](const ResponseSample &s) -> Tensor3 { return s.stress_mean; }),
+              {n, 3, 3}, "Pa");
+    {
+      h5::Handle set(H5Dopen2(g.id(), "stress_mean", H5P_DEFAULT), H5Dclose);
+      h5::write_attribute(set.id(), "description",
+                          std::string(r.interval_means ? "mean of the stress over the sampling interval ending at the sample"
+                                                       : "the instantaneous stress (the engine gives no interval mean)"));
+    }
     h5::write(g.id(), "volumetric_strain",
               scalars(r, [](const ResponseSample &s) { return volumetric_strain(s.strain); }), {n}, "1");
     h5::write(g.id(), "gamma_max", scalars(r, [](const ResponseSample &s) { return gamma_max(s.strain); }),
@@ -154,16 +163,27 @@ Response read_response(const std::filesystem::path &path, RunMeta *meta)
         meta->kinematics = h5::read_string_attribute(m.id(), "kinematics");
       const auto text = h5::read_strings(m.id(), "case_text");
       meta->case_text = text.empty() ? "" : text.front();
+      const auto status = h5::exists(m.id(), "status") ? h5::read_strings(m.id(), "status") : std::vector<std::string>{};
+      meta->status = status.empty() ? "complete" : status.front();
     }
   }
   h5::Handle g = h5::open_group(file.id(), "response");
   const auto time = h5::read_doubles(g.id(), "time");
   const auto strain = h5::read_doubles(g.id(), "strain");
   const auto stress = h5::read_doubles(g.id(), "stress");
+  // Files written before the interval means: the mean is the instantaneous stress.
+  const bool has_mean = h5::exists(g.id(), "stress_mean");
+  const auto stress_mean = has_mean ? h5::read_doubles(g.id(), "stress_mean") : stress;
+  if (has_mean) {
+    h5::Handle set(H5Dopen2(g.id(), "stress_mean", H5P_DEFAULT), H5Dclose);
+    r.interval_means = h5::has_attribute(set.id(), "description") &&
+                       h5::read_string_attribute(set.id(), "description").rfind("mean", 0) == 0;
+  }
   const auto stage = h5::read_ints(g.id(), "stage");
   const auto branch = h5::read_ints(g.id(), "branch");
   const std::size_t n = time.size();
-  if (strain.size() != 9 * n || stress.size() != 9 * n || stage.size() != n || branch.size() != n)
+  if (strain.size() != 9 * n || stress.size() != 9 * n || stress_mean.size() != 9 * n || stage.size() != n ||
+      branch.size() != n)
     throw h5::Error("inconsistent /response datasets in " + path.string());
   r.samples.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -173,6 +193,7 @@ Response read_response(const std::filesystem::path &path, RunMeta *meta)
       for (int j = 0; j < 3; ++j) {
         s.strain(i, j) = strain[9 * k + 3 * i + j];
         s.stress(i, j) = stress[9 * k + 3 * i + j];
+        s.stress_mean(i, j) = stress_mean[9 * k + 3 * i + j];
       }
     s.stage = stage[k];
     s.branch = branch[k];

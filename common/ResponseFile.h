@@ -19,6 +19,9 @@ struct RunMeta {
   /// /meta kinematics: what the engine's strain and stress mean ("finite strain", "small
   /// strain" for the continuum; the DEM's particles move at finite strain); empty: not written.
   std::string kinematics;
+  /// /meta/status: "complete", or where and why the run stopped early ("failed at t = ...:
+  /// ..."; "stopped at t = ...: ..."); a file without it (older) reads as "complete".
+  std::string status = "complete";
 };
 
 void write_response(const std::filesystem::path &path, const Response &response, RunMeta meta);

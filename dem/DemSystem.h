@@ -232,6 +232,10 @@ public:
   double critical_time_step() const;
 
   // --- running
+  /// The contact and wall loads at the current state, as the next step starts from (lists
+  /// built if needed, tangential histories not advanced, every contact's load kept): a
+  /// specimen measured before its first step. Nothing moves; step() would do the same first.
+  void evaluate_forces() { prepare(); }
   void step();
   void run(std::size_t n_steps);
   double time() const { return time_; }

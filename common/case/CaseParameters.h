@@ -82,8 +82,12 @@ struct DemParameters {
   unsigned int threads = 0;             ///< 0 = OpenMP default
   double local_damping = 0.0;           ///< Cundall non-viscous damping while loading
   double skin = 0.1;                    ///< Verlet skin / mean diameter
-  double servo_max_velocity = 0.05;     ///< [m/s] cap on a servo wall's speed
-  double servo_gain = 0.5;              ///< fraction of the stiffness-based correction per step
+  double servo_max_velocity = 0.05;     ///< [m/s] cap on a servo wall's speed (at least)
+  double servo_speed_ratio = 4.0;       ///< the cap is at least this times the fastest kinematic wall's speed
+  double servo_gain = 0.5;              ///< g_P: fraction of the stiffness-based correction per step
+  double servo_integral_gain = 0.1;     ///< g_I: per-step gain of the servo's integral part
+  double guard_min_edge = 3.0;          ///< a box edge below this many largest diameters fails the run
+  double guard_stress_ratio = 1e3;      ///< a wall stress above this times the reference fails the run
   unsigned int snapshots = 4;           ///< particle snapshots for localization analysis
   double checkpoint_interval = 600.0;   ///< [s] wall time between program checkpoints (0: none)
 };

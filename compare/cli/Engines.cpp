@@ -55,7 +55,7 @@ std::string specimen_key(const CaseDescription &c)
     << k.impact_velocity << ' ' << k.restitution << ' ' << k.normal_stiffness << ' ' << k.normal_damping << ' '
     << k.tangential_stiffness_ratio << ' ' << k.particle_friction << ' ' << k.wall_friction << "\ndem "
     << d.time_step_safety << ' ' << d.threads << ' ' << d.local_damping << ' ' << d.skin << ' '
-    << d.servo_max_velocity << ' ' << d.servo_gain << "\n";
+    << d.servo_max_velocity << ' ' << d.servo_gain << ' ' << d.servo_integral_gain << "\n";
   return o.str();
 }
 

@@ -204,7 +204,7 @@ void add_dem_fields(compare::ReportInput &in, const fs::path &dir, std::vector<c
 }
 
 /// Results of `engine` for case `c` in `dir` if they were made from the same case text by
-/// the same build; otherwise none.
+/// the same build and the run completed; otherwise none.
 bool up_to_date(const fs::path &file, const CaseDescription &c)
 {
   if (!fs::exists(file))
@@ -212,7 +212,7 @@ bool up_to_date(const fs::path &file, const CaseDescription &c)
   try {
     RunMeta meta;
     read_response(file, &meta);
-    return meta.case_text == c.text && meta.git_hash == GEOCOMP_GIT_HASH;
+    return meta.case_text == c.text && meta.git_hash == GEOCOMP_GIT_HASH && meta.status == "complete";
   } catch (const std::exception &) {
     return false;
   }
@@ -259,7 +259,12 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
     if (reuse)
       resumed = read_program_checkpoint(checkpoint, key, *e);
   }
+  // A run that fails mid-way (ProgramFailed: an engine's exception, a DEM guard) still
+  // writes what it recorded, with /meta/status saying where and why, and exits 1; a run
+  // whose stage ended on its max duration writes all of it, says so and exits 1 too.
   Response r;
+  std::string status;
+  bool failed = false;
   try {
     if (resumed) {
       std::cout << engine << ": resuming from " << checkpoint.string() << " at t = " << resumed->runner.time
@@ -273,15 +278,21 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
         snapshots->start();
       r = runner.run();
     }
+    status = completion_status(r, c.program);
   } catch (const ProgramStopped &stopped) {
     progress.finish();
     throw std::runtime_error(engine + " stopped by a signal at t = " + std::to_string(stopped.time) +
                              " s; checkpoint " + checkpoint.string() + ": run the same command again to resume");
+  } catch (ProgramFailed &failure) {
+    r = std::move(failure.partial);
+    status = failure.status;
+    failed = true;
   }
   progress.finish();
   std::error_code ignored;
   fs::remove(checkpoint, ignored);
-  if (const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get()))
+  const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get());
+  if (cube && !failed)
     write_mid_plane(*cube, dir);
   if (rank() == 0) {
     RunMeta meta;
@@ -292,10 +303,15 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
     meta.kinematics = engine == "dem" ? "finite strain (particle positions; box strain ln(L/L0), wall force over "
                                         "current wall area)"
                                       : c.continuum.kinematics;
+    meta.status = status;
     write_response(file, r, meta);
     std::cout << engine << ": " << r.samples.size() << " samples, " << r.branches.size()
               << " unloading branches -> " << file.string() << "\n";
+    if (!failed && status != "complete")
+      std::cerr << "warning: " << engine << ": " << status << "\n";
   }
+  if (failed)
+    throw std::runtime_error(engine + " " + status + "; the samples recorded so far are in " + file.string());
   return r;
 }
 
@@ -444,8 +460,8 @@ Command engine_command(const std::string &engine, const std::string &summary, co
     RunOptions o = parse_run(args, {engine});
     return guarded([&] {
       const auto lock = lock_output(o);
-      run_engine(engine, o.c, o.dir, o.reuse);
-      return static_cast<int>(ok);
+      const Response r = run_engine(engine, o.c, o.dir, o.reuse);
+      return static_cast<int>(completion_status(r, o.c.program) == "complete" ? ok : run_failure);
     });
   };
   return c;
@@ -506,7 +522,11 @@ int pair_case(const CaseDescription &c, const fs::path &dir, bool reuse)
   for (const auto &engine : engine_names())
     if (std::find(c.engines.begin(), c.engines.end(), engine) != c.engines.end())
       runs.emplace_back(engine, run_engine(engine, c, dir, reuse));
-  return write_and_say(report_input(c, runs, dir), dir);
+  const int code = write_and_say(report_input(c, runs, dir), dir);
+  for (const auto &[engine, response] : runs)
+    if (completion_status(response, c.program) != "complete")
+      return run_failure; // the warning was printed with the run
+  return code;
 }
 
 Command sweep_command()

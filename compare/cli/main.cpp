@@ -35,7 +35,8 @@ void print_help(std::ostream &out)
       << "commands:\n";
   for (const auto &c : commands())
     out << "  " << c.name << std::string(c.name.size() < 18 ? 18 - c.name.size() : 1, ' ') << c.summary << "\n";
-  out << "\nexit codes: 0 success, 1 run failure, 2 bad input\n"
+  out << "\nexit codes: 0 success, 1 run failure (results so far written, /meta/status says why; also a stage\n"
+         "            ended by its max duration before its stop condition), 2 bad input\n"
       << "units: SI; stresses tension positive inside the code and in results files\n";
 }
 } // namespace

@@ -11,6 +11,7 @@
 #include <csignal>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace geocomp::dem {
 
@@ -88,8 +89,12 @@ DemSystem make_system(const Packing &packing, const ContactParameters &c, const 
 DemEngineParameters DemEngineParameters::from_case(const DemParameters &d)
 {
   DemEngineParameters p;
-  p.servo_gain = d.servo_gain;
-  p.servo_max_velocity = d.servo_max_velocity;
+  p.servo.proportional_gain = d.servo_gain;
+  p.servo.integral_gain = d.servo_integral_gain;
+  p.servo.max_velocity = d.servo_max_velocity;
+  p.servo.kinematic_speed_ratio = d.servo_speed_ratio;
+  p.guards.min_edge_diameters = d.guard_min_edge;
+  p.guards.max_stress_ratio = d.guard_stress_ratio;
   return p;
 }
 
@@ -153,13 +158,15 @@ DemEngine::DemEngine(DemSystem system, const DemEngineParameters &parameters)
   // The engine reads contact forces only where advance_to lands (measure, snapshot,
   // Love-Weber stress): its last step records them, the others stream less memory.
   system_.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
+  // The loads at the start, as the first step would find them: a specimen measured before
+  // any step (a packing taken as given) reports its own stress.
+  system_.evaluate_forces();
   if (system_.n_walls() < 6)
     throw std::invalid_argument("DemEngine: the system needs the six walls of add_box() as walls 0..5");
   for (int a = 0; a < 3; ++a)
     if (system_.wall(2 * a).normal[a] != 1.0 || system_.wall(2 * a + 1).normal[a] != -1.0)
       throw std::invalid_argument("DemEngine: walls 0..5 must be the box faces x-, x+, y-, y+, z-, z+");
-  if (!(prm_.servo_gain > 0.0) || !(prm_.servo_max_velocity > 0.0))
-    throw std::invalid_argument("DemEngine: servo gain and maximum velocity must be positive");
+  prm_.servo.validate();
   if (system_.n_particles() == 0)
     throw std::invalid_argument("DemEngine: no particles");
   s_.L0 = box_lengths();
@@ -177,6 +184,9 @@ DemEngine::DemEngine(DemSystem system, const DemEngineParameters &parameters)
   }
   s_.density = mass / volume;
   s_.mean_diameter = diameter / double(n);
+  s_.max_diameter = 2.0 * *std::max_element(p.radius.begin(), p.radius.begin() + std::ptrdiff_t(n));
+  const Tensor3 sigma0 = wall_stress();
+  s_.reference_stress = sigma0.allFinite() ? sigma0.diagonal().cwiseAbs().maxCoeff() : 0.0;
   s_.solid_volume = volume;
   // Dashpot time c_n/k_n of a wall contact of the mean particle (overlap 0.1 % of R).
   ContactKinematics k;
@@ -220,8 +230,28 @@ std::vector<ExtraColumn> DemEngine::extra_columns() const
           {"kinetic_energy", "J", "translational + rotational"},
           {"inertial_number", "1", "gamma_dot d_mean sqrt(rho / p), gamma_dot = max - min wall strain rate"},
           {"unbalanced_force_ratio", "1", "mean |net particle force| / mean |contact force|"},
-          {"steps", "1", "DEM steps since the start of the run"}};
+          {"steps", "1", "DEM steps since the start of the run"},
+          {"servo_deviation", "1", "largest |sigma_aa - goal|/|goal| of a stress-controlled axis at any step of the "
+                                   "sampling interval (0 without one)"},
+          {"servo_reversals", "1", "steps of the sampling interval at which a servo wall's speed changed sign "
+                                   "(summed over the stress-controlled axes; an oscillating servo reverses every step)"},
+          {"wall_rate_xx", "1/s", "engineering strain rate of the x walls at the sample's last step"},
+          {"wall_rate_yy", "1/s", "the same for y"},
+          {"wall_rate_zz", "1/s", "the same for z"}};
 }
+
+namespace {
+/// Two stages that drive the box the same way.
+bool same_drive(const Stage &a, const Stage &b)
+{
+  if (a.isochoric != b.isochoric || a.lambda != b.lambda || a.isochoric_rate != b.isochoric_rate)
+    return false;
+  for (int k = 0; k < 3; ++k)
+    if (a.axes[k].kind != b.axes[k].kind || a.axes[k].value != b.axes[k].value)
+      return false;
+  return true;
+}
+} // namespace
 
 StageControl DemEngine::control() const
 {
@@ -237,6 +267,18 @@ void DemEngine::begin_control(const StageControl &control)
 {
   if (!control.stage)
     throw std::invalid_argument("DemEngine::begin_control: control without a stage");
+  // The servo's learned speeds belong to a drive: a new one (another stage, a branch's
+  // reversal) starts them afresh; the same drive again (the main path taken up after a
+  // branch) keeps them, so branches leave the main path as it was.
+  const bool same = s_.has_control && control.t0 == s_.control_t0 && control.direction == s_.control_direction &&
+                    control.eps0 == s_.control_eps0 && same_drive(*control.stage, s_.stage);
+  if (!same)
+    for (AxisServo &servo : s_.servo)
+      servo.reset();
+  if (!control.stage->isochoric)
+    for (const AxisDrive &a : control.stage->axes)
+      if (a.is_stress())
+        s_.reference_stress = std::max(s_.reference_stress, std::abs(a.value));
   s_.stage = *control.stage;
   s_.control_t0 = control.t0;
   s_.control_eps0 = control.eps0;
@@ -270,45 +312,34 @@ void DemEngine::step()
   const double dt = system_.time_step();
   const StageControl c = control();
   const double t_next = time() + dt;
-  double lo_next[3], hi_next[3];
-  bool place[3] = {false, false, false};
+  double lo_next[3], hi_next[3], v[3] = {0.0, 0.0, 0.0}; // v: outward speed of each wall of an axis
+  double kinematic_speed = 0.0; // the fastest kinematic wall's
   for (int a = 0; a < 3; ++a) {
+    if (!c.kinematic(a))
+      continue;
     const double lo = system_.wall(2 * a).point[a], hi = system_.wall(2 * a + 1).point[a];
-    const double L = hi - lo;
-    double v = 0.0; // outward speed of each wall of the axis
-    if (c.kinematic(a)) {
-      const double L_next = s_.L0[a] * (1.0 + c.strain(a, t_next));
-      const double centre = 0.5 * (lo + hi);
-      lo_next[a] = centre - 0.5 * L_next;
-      hi_next[a] = centre + 0.5 * L_next;
-      place[a] = true;
-      v = 0.5 * (L_next - L) / dt;
-    } else {
-      const int b = (a + 1) % 3, d = (a + 2) % 3;
-      const double area = (system_.wall(2 * b + 1).point[b] - system_.wall(2 * b).point[b]) *
-                          (system_.wall(2 * d + 1).point[d] - system_.wall(2 * d).point[d]);
-      const double sigma = -(system_.wall(2 * a + 1).force[a] - system_.wall(2 * a).force[a]) / (2.0 * area);
-      const double error = c.target_stress(a) - sigma; // > 0: too compressed, walls move out
-      // Wall contacts answer a wall speed v at once with k delta + c v: the stiffness seen in
-      // one step is K_w (1 + c/(k dt)). Without the dashpot term the loop gain exceeds 1
-      // for g = 0.5 at e = 0.5 and the walls lock into a period-2 oscillation.
-      const double k = 0.5 * (system_.wall(2 * a).stiffness + system_.wall(2 * a + 1).stiffness) *
-                       (1.0 + s_.dashpot_time / dt);
-      const double v_max = prm_.servo_max_velocity;
-      if (k > 0.0)
-        v = std::clamp(prm_.servo_gain * error * area / k / dt, -v_max, v_max); // Yade-style servo
-      else
-        v = error > 0.0 ? v_max : (error < 0.0 ? -v_max : 0.0);
+    const double L_next = s_.L0[a] * (1.0 + c.strain(a, t_next));
+    const double centre = 0.5 * (lo + hi);
+    lo_next[a] = centre - 0.5 * L_next;
+    hi_next[a] = centre + 0.5 * L_next;
+    v[a] = 0.5 * (L_next - (hi - lo)) / dt;
+    kinematic_speed = std::max(kinematic_speed, std::abs(v[a]));
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (!c.kinematic(a)) {
+      const double previous = system_.wall(2 * a + 1).velocity[a];
+      v[a] = servo_velocity(a, c, dt, kinematic_speed);
+      s_.servo_reversals += previous * v[a] < 0.0 ? 1 : 0;
     }
     Vec3 w = Vec3::Zero();
-    w[a] = v;
+    w[a] = v[a];
     system_.set_wall_velocity(2 * a, -w);
     system_.set_wall_velocity(2 * a + 1, w);
-    s_.rate[a] = 2.0 * v / s_.L0[a];
+    s_.rate[a] = 2.0 * v[a] / s_.L0[a];
   }
   system_.step();
   for (int a = 0; a < 3; ++a) {
-    if (!place[a])
+    if (!c.kinematic(a))
       continue;
     Vec3 p = system_.wall(2 * a).point;
     p[a] = lo_next[a];
@@ -317,6 +348,82 @@ void DemEngine::step()
     p[a] = hi_next[a];
     system_.set_wall_position(2 * a + 1, p);
   }
+  accumulate(c, dt); // the stress guards first: a stress that is not finite moves the servo walls anywhere
+  check_box();
+}
+
+void DemEngine::check_box() const
+{
+  const Vector3 L = box_lengths();
+  const double min_edge = prm_.guards.min_edge_diameters * s_.max_diameter;
+  for (int a = 0; a < 3; ++a)
+    if (!(L[a] >= min_edge)) {
+      std::ostringstream o;
+      o << "guard: the box edge along " << "xyz"[a] << " is " << L[a] << " m, ";
+      if (std::isfinite(L[a]))
+        o << "below " << prm_.guards.min_edge_diameters << " particle diameters (" << min_edge << " m)";
+      else
+        o << "not a length";
+      o << " at t = " << time() << " s: the program has squeezed the box shut";
+      throw GuardError(o.str());
+    }
+}
+
+void DemEngine::check_particles_inside() const
+{
+  const ParticleStore &p = system_.particles();
+  for (std::size_t k = 0; k < p.size(); ++k)
+    for (int a = 0; a < 3; ++a)
+      if (!(p.x[k][a] >= system_.wall(2 * a).point[a] && p.x[k][a] <= system_.wall(2 * a + 1).point[a])) {
+        std::ostringstream o;
+        o << "guard: particle " << p.id[k] << " has left the box along " << "xyz"[a] << " (centre at "
+          << p.x[k][a] << " m, walls at " << system_.wall(2 * a).point[a] << " and " << system_.wall(2 * a + 1).point[a]
+          << " m) at t = " << time() << " s";
+        throw GuardError(o.str());
+      }
+}
+
+double DemEngine::servo_velocity(int a, const StageControl &c, double dt, double kinematic_speed)
+{
+  const int b = (a + 1) % 3, d = (a + 2) % 3;
+  ServoInput in;
+  in.goal = c.target_stress(a);
+  in.area = (system_.wall(2 * b + 1).point[b] - system_.wall(2 * b).point[b]) *
+            (system_.wall(2 * d + 1).point[d] - system_.wall(2 * d).point[d]);
+  in.stress = -(system_.wall(2 * a + 1).force[a] - system_.wall(2 * a).force[a]) / (2.0 * in.area);
+  // Wall contacts answer a wall speed v at once with k delta + c v: the stiffness seen in
+  // one step is K_w (1 + c/(k dt)). Without the dashpot term the loop gain exceeds 1 for
+  // g_P = 0.5 at e = 0.5 and the walls lock into a period-2 oscillation.
+  in.stiffness = 0.5 * (system_.wall(2 * a).stiffness + system_.wall(2 * a + 1).stiffness) *
+                 (1.0 + s_.dashpot_time / dt);
+  in.dt = dt;
+  in.kinematic_speed = kinematic_speed;
+  return s_.servo[a].velocity(prm_.servo, in);
+}
+
+void DemEngine::accumulate(const StageControl &c, double dt)
+{
+  const Tensor3 sigma = wall_stress();
+  const double largest = sigma.diagonal().cwiseAbs().maxCoeff();
+  if (!sigma.allFinite() ||
+      (s_.reference_stress > 0.0 && largest > prm_.guards.max_stress_ratio * s_.reference_stress)) {
+    std::ostringstream o;
+    o << "guard: the wall stress " << (sigma.allFinite() ? "reached " : "is not finite: ") << largest << " Pa";
+    if (sigma.allFinite())
+      o << ", above " << prm_.guards.max_stress_ratio << " times the reference stress " << s_.reference_stress << " Pa";
+    o << ", at t = " << time() << " s";
+    throw GuardError(o.str());
+  }
+  s_.stress_sum += dt * sigma;
+  s_.window_time += dt;
+  if (c.stage->isochoric)
+    return;
+  for (int a = 0; a < 3; ++a)
+    if (!c.kinematic(a)) {
+      const double goal = c.target_stress(a);
+      const double deviation = std::abs(sigma(a, a) - goal) / (goal != 0.0 ? std::abs(goal) : 1.0);
+      s_.max_servo_deviation = std::max(s_.max_servo_deviation, deviation);
+    }
 }
 
 void DemEngine::maybe_checkpoint()
@@ -367,6 +474,7 @@ void DemEngine::advance_to(double t_end)
 
 ResponseSample DemEngine::measure()
 {
+  check_particles_inside();
   ResponseSample s;
   s.time = time();
   const Vector3 L = box_lengths();
@@ -374,6 +482,7 @@ ResponseSample DemEngine::measure()
   for (int a = 0; a < 3; ++a)
     s.strain(a, a) = (L[a] - s_.L0[a]) / s_.L0[a];
   s.stress = wall_stress();
+  s.stress_mean = s_.window_time > 0.0 ? Tensor3(s_.stress_sum / s_.window_time) : s.stress;
 
   const ParticleStore &p = system_.particles();
   const std::size_t n = p.size();
@@ -441,6 +550,14 @@ ResponseSample DemEngine::measure()
   s.extras[kInertialNumber] = inertial;
   s.extras[kUnbalancedForceRatio] = unbalanced;
   s.extras[kSteps] = double(system_.n_steps());
+  s.extras[kServoDeviation] = s_.max_servo_deviation;
+  s.extras[kServoReversals] = double(s_.servo_reversals);
+  for (int a = 0; a < 3; ++a)
+    s.extras[kWallRateXX + a] = s_.rate[a];
+  s_.stress_sum = Tensor3::Zero(); // the next interval starts here
+  s_.window_time = 0.0;
+  s_.max_servo_deviation = 0.0;
+  s_.servo_reversals = 0;
   return s;
 }
 
@@ -538,7 +655,7 @@ void get_stage(std::istream &in, Stage &st)
 
 void DemEngine::write_state(std::ostream &out, const State &s, const DemSystem &system)
 {
-  binary::put_tag(out, "GCDEMENG", 1);
+  binary::put_tag(out, "GCDEMENG", 2);
   binary::put(out, s.L0);
   binary::put(out, s.t_origin);
   binary::put_vector(out, s.x_start);
@@ -546,19 +663,27 @@ void DemEngine::write_state(std::ostream &out, const State &s, const DemSystem &
   binary::put(out, s.mean_diameter);
   binary::put(out, s.solid_volume);
   binary::put(out, s.dashpot_time);
+  binary::put(out, s.max_diameter);
+  binary::put(out, s.reference_stress);
   binary::put(out, s.has_control);
   put_stage(out, s.stage);
   binary::put(out, s.control_t0);
   binary::put(out, s.control_direction);
   binary::put(out, s.control_eps0);
   binary::put(out, s.rate);
+  for (const AxisServo &servo : s.servo)
+    binary::put(out, servo.integral_velocity());
+  binary::put(out, s.stress_sum);
+  binary::put(out, s.window_time);
+  binary::put(out, s.max_servo_deviation);
+  binary::put(out, s.servo_reversals);
   system.write_state(out);
   binary::put_tag(out, "GCDEMEND", 1);
 }
 
 void DemEngine::read_state(std::istream &in, State &s, DemSystem &system)
 {
-  binary::expect_tag(in, "GCDEMENG", 1);
+  binary::expect_tag(in, "GCDEMENG", 2);
   binary::get(in, s.L0);
   binary::get(in, s.t_origin);
   binary::get_vector(in, s.x_start);
@@ -566,12 +691,23 @@ void DemEngine::read_state(std::istream &in, State &s, DemSystem &system)
   binary::get(in, s.mean_diameter);
   binary::get(in, s.solid_volume);
   binary::get(in, s.dashpot_time);
+  binary::get(in, s.max_diameter);
+  binary::get(in, s.reference_stress);
   binary::get(in, s.has_control);
   get_stage(in, s.stage);
   binary::get(in, s.control_t0);
   binary::get(in, s.control_direction);
   binary::get(in, s.control_eps0);
   binary::get(in, s.rate);
+  for (AxisServo &servo : s.servo) {
+    double v = 0.0;
+    binary::get(in, v);
+    servo.set_integral_velocity(v);
+  }
+  binary::get(in, s.stress_sum);
+  binary::get(in, s.window_time);
+  binary::get(in, s.max_servo_deviation);
+  binary::get(in, s.servo_reversals);
   system.read_state(in);
   binary::expect_tag(in, "GCDEMEND", 1);
   if (system.n_walls() < 6 || s.x_start.size() != system.n_particles())

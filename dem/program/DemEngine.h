@@ -12,17 +12,16 @@
 //    $L_{0,a}(1+\varepsilon_a(t+\Delta t))$, symmetric about the box centre, and after the step the
 //    walls are placed exactly there. The isochoric program (S0 eq. (3)) comes out of
 //    StageControl::strain as $L_z = V_0/(L_x L_y)$, so the box volume is constant to round-off.
-//  - Stress axis a (servo, after Yade's TriaxialStressController, DEM-NOTES section 7):
-//    each wall moves outward by
-//    $$ \delta = g\,\frac{(\sigma^{goal}_{aa} - \sigma_{aa})\,A_a}{K_w},\qquad |\delta| \le v_{max}\Delta t $$
-//    per step, $K_w = \bar k_w (1 + c_n/(k_n\Delta t))$ with $\bar k_w$ the mean of the two walls'
-//    contact stiffnesses (wall(k).stiffness) and $c_n/k_n$ the dashpot time of a mean wall
-//    contact (the dashpots answer a wall speed within the step; leaving them out makes
-//    the loop unstable for g = 0.5 at restitution 0.5), $A_a$ the current face area, g the
-//    gain; both walls of the axis move symmetrically.
-//    With no wall contact ($K_w = 0$) the walls move at $v_{max}$ towards the goal.
+//  - Stress axis a: a servo moves both walls symmetrically (AxisServo, ServoControl.h):
+//    a proportional part after Yade's TriaxialStressController (DEM-NOTES section 7), the
+//    stiffness-based one-step correction $(\sigma^{goal}_{aa} - \sigma_{aa}) A_a / K$ times a gain,
+//    with $K = \bar k_w (1 + c_n/(k_n\Delta t))$ from the walls' contact stiffnesses and the
+//    dashpot time of a mean wall contact, plus an integral part that learns the speed the
+//    walls must keep up, under a velocity cap.
 // Measurements (measure()): the stress from the wall forces,
-// $\sigma_{ba} = -(F^{hi}_b - F^{lo}_b)/(2A_a)$ (symmetrised; the diagonal is S0's wall stress), and
+// $\sigma_{ba} = -(F^{hi}_b - F^{lo}_b)/(2A_a)$ (symmetrised; the diagonal is S0's wall stress),
+// its time-weighted mean over every step since the previous measure() (the interval mean
+// of the Response), and
 // extras: the Love-Weber stress over all contacts, particle-wall ones included,
 // $\sigma = -\frac1V\sum_c \ell_c\otimes f_c$ (DEM-NOTES section 6, V the box volume), the
 // coordination number $Z = 2C/N$, the mechanical one $Z_m = (2C - N_1)/(N - N_0 - N_1)$ (Thornton
@@ -41,6 +40,7 @@
 #include "common/LoadingEngine.h"
 #include "common/case/CaseParameters.h"
 #include "dem/DemSystem.h"
+#include "dem/program/ServoControl.h"
 #include "dem/specimen/Packing.h"
 
 #include <array>
@@ -57,14 +57,36 @@ namespace geocomp::dem {
 ContactModel make_contact_model(const ContactParameters &c);
 
 /// A DemSystem holding the packing in its box (six walls with mu_p, spheres with the
-/// packing's density), the contact law, mu_s, the skin (DemParameters::skin times the
+/// packing's density and its velocities when it has them), the contact law, mu_s, the skin (DemParameters::skin times the
 /// mean diameter), the threads, local damping and dt = time_step_safety x critical step.
 DemSystem make_system(const Packing &packing, const ContactParameters &c, const DemParameters &d);
 
+/// Where a run stops being a test of the specimen (issue 30). Past them the engine throws
+/// GuardError; the ProgramRunner turns that into ProgramFailed with the samples so far,
+/// and `geocomp` writes them with /meta/status and exits 1.
+///  - a box edge below `min_edge_diameters` times the largest particle diameter (a program
+///    that squeezes the box shut or turns it inside out), checked every step;
+///  - a wall stress that is not finite, or whose largest normal component exceeds
+///    `max_stress_ratio` times the reference stress (the largest |sigma_aa| at the engine's
+///    start and of every stress goal since; a stress-free start under kinematic drives
+///    alone has none, and only the finiteness is checked), every step;
+///  - a particle centre outside the box, at every sample.
+struct GuardLimits
+{
+  double min_edge_diameters = 3.0;
+  double max_stress_ratio = 1e3;
+};
+
+/// A guard of GuardLimits has stopped the run; the message says which and where.
+struct GuardError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
 struct DemEngineParameters
 {
-  double servo_gain = 0.5;            ///< g: fraction of the stiffness-based wall correction per step
-  double servo_max_velocity = 0.05;   ///< [m/s] cap on a servo wall's speed
+  ServoParameters servo;              ///< the stress servo of the walls (ServoControl.h)
+  GuardLimits guards;                 ///< where a run is stopped as failed
   std::filesystem::path checkpoint_file; ///< where checkpoints go (empty: none, not even on interrupt)
   std::uint64_t checkpoint_every_steps = 0; ///< periodic checkpoint every so many DEM steps (0: off)
   double checkpoint_every_seconds = 0.0;    ///< periodic checkpoint every so much wall time (0: off)
@@ -121,7 +143,8 @@ public:
   enum Extra : int {
     kLoveWeberXX, kLoveWeberYY, kLoveWeberZZ, kLoveWeberXY, kLoveWeberYZ, kLoveWeberXZ, kLoveWeberMean,
     kCoordination, kMechanicalCoordination, kWallContacts, kFabricXX, kFabricYY, kFabricZZ,
-    kFabricAnisotropy, kPorosity, kKineticEnergy, kInertialNumber, kUnbalancedForceRatio, kSteps, kExtraCount
+    kFabricAnisotropy, kPorosity, kKineticEnergy, kInertialNumber, kUnbalancedForceRatio, kSteps,
+    kServoDeviation, kServoReversals, kWallRateXX, kWallRateYY, kWallRateZZ, kExtraCount
   };
 
   /// `system` must hold the six walls of add_box() as walls 0..5; its box, time and
@@ -135,7 +158,10 @@ public:
   std::vector<ExtraColumn> extra_columns() const override;
   void begin_control(const StageControl &control) override;
   void advance_to(double t_end) override;
+  /// The sample now; its stress_mean is the mean wall stress over the steps since the
+  /// previous measure() (the instantaneous one if none), which starts the next interval.
   ResponseSample measure() override;
+  bool gives_interval_means() const override { return true; }
   std::unique_ptr<EngineState> save() const override;
   void restore(const EngineState &state) override;
   bool can_write_states() const override { return true; }
@@ -171,17 +197,33 @@ private:
     std::vector<Vec3> x_start;          ///< by id, at construction
     double density = 0.0, mean_diameter = 0.0, solid_volume = 0.0;
     double dashpot_time = 0.0;          ///< c_n/k_n of a mean wall contact (servo)
+    double max_diameter = 0.0;          ///< [m] of the largest particle (guards)
+    double reference_stress = 0.0;      ///< [Pa] the stress guard's reference (GuardLimits)
     bool has_control = false;
     Stage stage;                        ///< the drive of the control (copied)
     double control_t0 = 0.0, control_direction = 1.0;
     Vector3 control_eps0 = Vector3::Zero();
     Vector3 rate = Vector3::Zero();     ///< engineering strain rates of the last step
+    std::array<AxisServo, 3> servo{};   ///< the stress servo of each axis
+    // The sampling interval under way (since the last measure()):
+    Tensor3 stress_sum = Tensor3::Zero(); ///< sum of wall stress x dt over its steps
+    double window_time = 0.0;           ///< [s] their time
+    double max_servo_deviation = 0.0;   ///< largest |sigma_aa - goal| / |goal| of a stress axis at a step
+    std::uint64_t servo_reversals = 0;  ///< steps at which a servo wall's speed changed sign
   };
 
   DemEngine() = default;
   static void write_state(std::ostream &out, const State &s, const DemSystem &system);
   static void read_state(std::istream &in, State &s, DemSystem &system);
   void step();
+  /// Outward speed of each wall of stress axis a for a step of dt (the servo), the
+  /// kinematic walls moving at up to `kinematic_speed`.
+  double servo_velocity(int a, const StageControl &c, double dt, double kinematic_speed);
+  /// Adds the wall stress after a step of dt to the interval's sums; checks the stress guards.
+  void accumulate(const StageControl &c, double dt);
+  /// The box-edge guard (every step) and the particles-in-the-box guard (at samples).
+  void check_box() const;
+  void check_particles_inside() const;
   StageControl control() const;
   void maybe_checkpoint();
 

@@ -2,8 +2,9 @@
 // n = 14: 2744; R = 5 mm +- 10 %) on a loose jittered lattice (packing fraction ~0.24,
 // jitter up to 0.3 R per axis), compacted frictionless by the servo to
 // sigma_0 = 100 kPa with preparation damping, then mu_s = 0.4 switched on and held again
-// until quasi-static (unbalanced-force ratio < 1e-3) with the damping off. Built once
-// per process.
+// until quasi-static (unbalanced-force ratio < 1e-3) with the damping off. The loose
+// specimen is compacted with mu_s = 0.4 on from the start (friction stops the grains short
+// of the dense arrangement). Built once per process.
 #pragma once
 
 #include "dem/program/DemEngine.h"
@@ -40,8 +41,8 @@ inline DemParameters dem_parameters()
 inline DemEngineParameters engine_parameters()
 {
   DemEngineParameters p;
-  p.servo_gain = 0.5;
-  p.servo_max_velocity = 0.05;
+  p.servo.proportional_gain = 0.5;
+  p.servo.max_velocity = 0.05;
   return p;
 }
 
@@ -52,13 +53,13 @@ struct Consolidated
   double seconds = 0.0;
 };
 
-inline Consolidated consolidate(int n_per_edge, std::uint64_t seed)
+inline Consolidated consolidate(int n_per_edge, std::uint64_t seed, double compaction_friction = 0.0)
 {
   {
     const auto start = std::chrono::steady_clock::now();
     Consolidated r;
     ContactParameters cp = contact_parameters();
-    cp.particle_friction = 0.0; // S0: frictionless preparation
+    cp.particle_friction = compaction_friction; // S0: frictionless preparation
     DemSystem sys = make_system(jittered_lattice(n_per_edge, 0.005, 0.1, 0.3, 2650.0, seed), cp, dem_parameters());
     sys.set_local_damping(0.5); // preparation only
     DemEngine prep(std::move(sys), engine_parameters());
@@ -91,6 +92,12 @@ inline const Consolidated &consolidated()
 inline const Consolidated &consolidated_large()
 {
   static const Consolidated c = consolidate(14, 11);
+  return c;
+}
+
+inline const Consolidated &consolidated_large_loose()
+{
+  static const Consolidated c = consolidate(14, 11, contact_parameters().particle_friction);
   return c;
 }
 
