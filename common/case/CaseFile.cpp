@@ -46,11 +46,13 @@ void declare_all(ParameterHandler &prm, unsigned int stages)
 unsigned int count_stages(const ParameterText &text)
 {
   unsigned int n = 0;
-  for (const std::string &entered : text.entered) {
-    if (entered.rfind("program/stage ", 0) != 0)
+  for (const ParameterText::Section &s : text.sections) {
+    const ParameterText::Section &parent = text.sections[s.parent];
+    if (s.parent == 0 || parent.parent != 0 || parent.name != "program" || s.name.rfind("stage ", 0) != 0)
       continue;
-    const std::string number = entered.substr(14, 4);
-    if (!number.empty() && std::all_of(number.begin(), number.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    const std::string number = s.name.substr(6, 4);
+    if (!number.empty() &&
+        std::all_of(number.begin(), number.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
       n = std::max(n, std::min(1000u, static_cast<unsigned int>(std::stoul(number))));
   }
   return n;

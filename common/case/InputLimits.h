@@ -22,6 +22,10 @@ constexpr std::size_t max_line_bytes = 8192;
 /// one of the files that include it is refused at once, whatever the depth.
 constexpr unsigned int max_include_depth = 8;
 
+/// Subsections nested more deeply in a .prm case are refused: the deepest declared one is
+/// four levels down; the bound keeps the reader's bookkeeping small whatever a file holds.
+constexpr unsigned int max_section_depth = 32;
+
 /// Objects nested more deeply in a JSON case: the deepest case section is four levels
 /// (program / stage 1 / ...), so 32 leaves room while bounding the parser's work.
 constexpr unsigned int max_json_depth = 32;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <map>
 #include <utility>
 
 namespace geocomp {
@@ -116,8 +117,9 @@ public:
 private:
   ParameterText &out_;
   std::string path_;
-  std::vector<std::string> stack_;
-  unsigned int section_ = 0;
+  std::vector<unsigned int> stack_;  ///< the sections entered, innermost last
+  unsigned int section_ = 0;         ///< the innermost, 0 at the top level
+  std::map<std::pair<unsigned int, std::string>, unsigned int> children_; ///< (parent, name) -> section
 
   std::string where(unsigned int file, std::size_t line) const
   {
@@ -129,7 +131,7 @@ private:
     std::string parameter = "(file)";
     const std::string s = statement_of(joined.substr(0, 1024));
     if ((starts_with(s, "set ") || starts_with(s, "SET ")) && s.find('=') != std::string::npos)
-      parameter = out_.sections[section_] + trim(s.substr(4, s.find('=') - 4));
+      parameter = out_.path_of(section_) + trim(s.substr(4, s.find('=') - 4));
     throw CaseError(path_, parameter,
                     where(file, first) + " is longer than " + std::to_string(max_line_bytes) +
                       " characters: expected shorter values (a packing or a table this long belongs in its own file)");
@@ -146,25 +148,27 @@ private:
                         " MiB: expected a smaller case");
   }
 
-  void enter(const std::string &name)
+  /// A subsection entered: the section (parent, name), made the first time it is entered.
+  void enter(const std::string &name, unsigned int file, std::size_t line)
   {
-    stack_.push_back(name);
-    std::string path;
-    for (const auto &s : stack_)
-      path += s + "/";
-    out_.entered.push_back(path.substr(0, path.size() - 1));
-    out_.sections.push_back(path);
-    section_ = static_cast<unsigned int>(out_.sections.size() - 1);
+    if (stack_.size() >= max_section_depth)
+      throw CaseError(path_, "(file)",
+                      where(file, line) + ": subsections nested more than " + std::to_string(max_section_depth) +
+                        " deep: expected the sections of a case file");
+    const auto key = std::make_pair(section_, name);
+    auto it = children_.find(key);
+    if (it == children_.end()) {
+      out_.sections.push_back({section_, name});
+      it = children_.emplace(key, static_cast<unsigned int>(out_.sections.size() - 1)).first;
+    }
+    stack_.push_back(it->second);
+    section_ = it->second;
   }
 
   void leave()
   {
     stack_.pop_back();
-    std::string path;
-    for (const auto &s : stack_)
-      path += s + "/";
-    out_.sections.push_back(path);
-    section_ = static_cast<unsigned int>(out_.sections.size() - 1);
+    section_ = stack_.empty() ? 0 : stack_.back();
   }
 
   /// Physical lines first..last of one file form one logical line whose statement is `s`.
@@ -185,7 +189,7 @@ private:
       emit(line, file, k);
     }
     if (starts_with(s, "subsection ") || starts_with(s, "SUBSECTION "))
-      enter(trim(s.substr(11)));
+      enter(trim(s.substr(11)), file, first);
     else if ((starts_with(s, "end") || starts_with(s, "END")) && trim(s.substr(3)).empty() && !stack_.empty())
       leave();
   }
@@ -236,7 +240,15 @@ std::string ParameterText::section_at(unsigned int line) const
 {
   if (line == 0 || line > lines.size())
     return "";
-  return sections[lines[line - 1].section];
+  return path_of(lines[line - 1].section);
+}
+
+std::string ParameterText::path_of(unsigned int section) const
+{
+  std::string path;
+  for (unsigned int s = section; s != 0; s = sections[s].parent)
+    path.insert(0, sections[s].name + "/");
+  return path;
 }
 
 std::string ParameterText::statement_at(unsigned int line) const

@@ -30,14 +30,21 @@ struct ParameterText {
     unsigned int section = 0;      ///< index into `sections`
   };
   std::vector<Origin> lines;       ///< one per line of `text`
-  std::vector<std::string> sections{""}; ///< subsection paths, "program/stage 1/"; [0] the top level
-  std::vector<std::string> entered; ///< every subsection entered, as "program/stage 1", in order
+  /// The subsections entered, each once however often it is entered: its name and the
+  /// index of the subsection it sits in. [0] is the top level (no name, its own parent).
+  struct Section {
+    unsigned int parent = 0;
+    std::string name;
+  };
+  std::vector<Section> sections{Section{}};
 
   /// "line 12" for a line of the file itself, "line 3 of <included file>" otherwise;
   /// `line` is 1-based in `text`.
   std::string where(unsigned int line) const;
   /// The subsection path ("program/stage 1/", or "") at the start of 1-based `line`.
   std::string section_at(unsigned int line) const;
+  /// The path of a section ("program/stage 1/"; "" for the top level).
+  std::string path_of(unsigned int section) const;
   /// The statement deal.II reads from the logical line that starts at 1-based `line`:
   /// continuations joined, the comment removed, tabs as spaces, trimmed.
   std::string statement_at(unsigned int line) const;
@@ -46,6 +53,7 @@ struct ParameterText {
 /// Expands the include lines of `text` (read from `path`, which names it in messages).
 /// Throws CaseError naming `path` (and the included file concerned) for text that is not
 /// UTF-8 or holds a NUL byte, a logical line longer than input_limits::max_line_bytes,
+/// subsections nested deeper than input_limits::max_section_depth,
 /// an included file that cannot be read (read_input_file), includes nested too deeply or
 /// in a cycle, an included file with unbalanced subsections, and an expanded text larger
 /// than input_limits::max_file_bytes.

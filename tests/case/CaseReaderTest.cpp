@@ -253,3 +253,21 @@ TEST(CaseJson, AJsonCaseReadsAsTheSamePrmCase)
   EXPECT_EQ(j.continuum.poisson_ratio, p.continuum.poisson_ratio);
   EXPECT_EQ(j.program.stages.size(), p.program.stages.size());
 }
+
+TEST(CaseLimits, SubsectionsNestedBeyondTheLimitAreRefusedAndReenteringOnesCostsNothing)
+{
+  std::string deep;
+  for (unsigned int k = 0; k <= geocomp::input_limits::max_section_depth; ++k)
+    deep += "subsection a\n";
+  EXPECT_TRUE(contains(refusal_of_text(deep, "deep.prm").what(), "nested more than 32 deep"));
+  // 31 levels of long names, then 40 000 subsections entered and left inside them: the
+  // reader keeps one record per distinct subsection, not one path per line (that would
+  // be tens of gigabytes); deal.II then refuses the first unknown subsection.
+  std::string wide;
+  for (int k = 0; k < 31; ++k)
+    wide += "subsection " + std::string(8000, char('a' + k % 26)) + "\n";
+  for (int k = 0; k < 40000; ++k)
+    wide += "subsection b\nend\n";
+  ASSERT_LT(wide.size(), std::size_t(1) << 20);
+  EXPECT_EQ(refusal_of_text(wide, "wide.prm").parameter, std::string(8000, 'a'));
+}
