@@ -122,12 +122,12 @@ CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Rea
       b.name = m[1];
       b.lower = std::strtod(lo.c_str(), &e1);
       b.upper = std::strtod(hi.c_str(), &e2);
-      if (*e1 == '\0' && *e2 == '\0' && b.lower < b.upper) {
+      if (*e1 == '\0' && *e2 == '\0' && std::isfinite(b.lower) && std::isfinite(b.upper) && b.lower < b.upper) {
         p.bounds.push_back(b);
         continue;
       }
     }
-    r.fail("calibration/bounds", "'" + item + "' is not 'name: lower upper' with lower < upper");
+    r.fail("calibration/bounds", "'" + item + "' is not 'name: lower upper' with finite lower < upper");
   }
   // Written inside <output>/calibration/: a name, not a path that leads elsewhere.
   if (p.output_file.empty() || p.output_file == "." || p.output_file == ".." ||
