@@ -40,6 +40,9 @@ struct SpecimenParameters {
   double isotropic_pressure = 2.0e6;    ///< [Pa] sigma_0, compression positive
   bool aristotelian = false;            ///< first-order (overdamped) packing dynamics
   std::string frictionless_relaxation = "damped"; ///< damped | fire: the frictionless rest after growth
+  /// consolidate (rest, friction on, servo to the isotropic pressure) | as given (an imported
+  /// packing starts the program exactly as read: text and store sources)
+  std::string preparation = "consolidate";
 };
 
 struct ContactParameters {

@@ -36,6 +36,12 @@ void declare_specimen(dealii::ParameterHandler &prm)
                     "All-round pre-stress sigma_0 [Pa], compression positive (S0: 8.093 MPa; 2 MPa).");
   prm.declare_entry("aristotelian", "false", Bool(),
                     "Pack with first-order (overdamped, velocity proportional to force) dynamics.");
+  prm.declare_entry("preparation", "consolidate", Selection("consolidate|as given"),
+                    "What happens to the specimen before the program: 'consolidate' (rest, friction on, servo "
+                    "consolidation to 'isotropic pressure'; for a text source a frictionless rest first), or "
+                    "'as given' for an imported packing (source = text or store): the program starts on the "
+                    "positions (and the velocities a LAMMPS data file lists) exactly as read, with no rest, no "
+                    "consolidation and no isotropic pressure required.");
   prm.declare_entry("frictionless relaxation", "damped", Selection("damped|fire"),
                     "How the grown frictionless packing comes to rest at fixed walls (Newtonian growth): "
                     "Cundall local damping, or FIRE (Bitzek et al. 2006: velocities turned towards the "
@@ -63,12 +69,16 @@ SpecimenParameters parse_specimen(dealii::ParameterHandler &prm, const Reader &r
   p.isotropic_pressure = prm.get_double("isotropic pressure");
   p.aristotelian = prm.get_bool("aristotelian");
   p.frictionless_relaxation = prm.get("frictionless relaxation");
+  p.preparation = prm.get("preparation");
   prm.leave_subsection();
   if (p.aristotelian && p.frictionless_relaxation == "fire")
     r.fail("specimen/frictionless relaxation", "fire needs Newtonian dynamics: set aristotelian = false or frictionless relaxation = damped");
   if (p.source == "store" && (p.store_file.empty() || p.store_name.empty()))
     r.fail(p.store_file.empty() ? "specimen/store file" : "specimen/store name",
            "source = store needs both 'store file' and 'store name'");
+  if (p.preparation == "as given" && p.source == "generate")
+    r.fail("specimen/preparation", "'as given' needs an imported packing (source = text or store); a generated "
+                                   "specimen is grown and consolidated");
   if (p.source == "text" && p.text_file.empty())
     r.fail("specimen/text file", "source = text needs a packing file");
   if (p.size_distribution == "uniform" && p.radius_spread <= 0.0)

@@ -20,6 +20,7 @@
 #include "continuum/fe/CubeEngine.h"
 #include "dem/program/DemEngine.h"
 #include "dem/program/Fields.h"
+#include "dem/program/SpecimenPreparation.h"
 
 #include <mpi.h>
 
@@ -228,6 +229,9 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
       std::cout << engine << ": up-to-date results reused: " << file.string() << "\n";
     return read_response(file);
   }
+  if (engine == "dem" && rank() == 0)
+    for (const std::string &unused : dem::ignored_specimen_entries(c))
+      std::cerr << "warning: " << unused << "\n";
   std::unique_ptr<LoadingEngine> e = make_engine(engine, c, dir.string(), engine_comm);
   ProgramRunner runner(c.program, *e);
   ProgressPrinter progress(engine);

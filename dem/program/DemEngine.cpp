@@ -71,8 +71,12 @@ DemSystem make_system(const Packing &packing, const ContactParameters &c, const 
   system.reserve(packing.size());
   system.add_box(packing.box_min, packing.box_max, c.wall_friction);
   double d_mean = 0.0;
+  const bool moving = !packing.velocity.empty();
   for (std::size_t k = 0; k < packing.size(); ++k) {
-    system.add_sphere(packing.position[k], packing.radius[k], packing.density);
+    const ParticleId id = system.add_sphere(packing.position[k], packing.radius[k], packing.density,
+                                            moving ? packing.velocity[k] : Vec3::Zero());
+    if (moving)
+      system.set_angular_velocity(id, packing.angular_velocity[k]);
     d_mean += 2.0 * packing.radius[k];
   }
   d_mean /= double(packing.size());
@@ -503,7 +507,7 @@ ResponseSample DemEngine::measure()
     fabric += c.normal * c.normal.transpose();
     ++C;
   }
-  lw = 0.5 * (lw + lw.transpose()) / V;
+  lw = (0.5 / V) * (lw + lw.transpose()).eval(); // eval(): lw.transpose() aliases lw
   std::size_t n0 = 0, n1 = 0, n_dynamic = 0;
   double ke = 0.0, sum_net = 0.0;
   for (std::size_t k = 0; k < n; ++k) {

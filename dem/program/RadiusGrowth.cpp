@@ -192,12 +192,32 @@ GrowthResult grow_radii(DemSystem &system, const std::vector<double> &target, co
   return r;
 }
 
+bool nothing_touches(DemSystem &system)
+{
+  system.evaluate_forces();
+  const std::vector<double> &radius = system.particles().radius;
+  if (radius.empty())
+    return true;
+  const double tolerance = 1e-9 * *std::min_element(radius.begin(), radius.end());
+  for (const ContactRecord &c : system.contacts())
+    if (c.overlap > tolerance)
+      return false;
+  return true;
+}
+
 RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &phase, const PhaseProgress &progress)
 {
   const auto t0 = std::chrono::steady_clock::now();
   const std::uint64_t steps0 = system.n_steps();
   const double time0 = system.time();
   RelaxResult r;
+  if (nothing_touches(system)) {
+    r.converged = r.nothing_touches = true;
+    r.rest = rest_state(system);
+    if (progress)
+      progress(phase + ": nothing touches, ended at once", 0.0);
+    return r;
+  }
   std::uint64_t checks = 0;
   // FIRE state (RestCriteria::fire).
   const double dt0 = system.time_step(), damping0 = system.local_damping_coefficient();

@@ -78,9 +78,18 @@ struct PhaseCost
 struct RelaxResult
 {
   bool converged = false;
+  /// Nothing touched at the start (no contact with an overlap above 1e-9 of the smallest
+  /// radius: spheres apart, or an ordered array of touching ones): nothing can come to rest
+  /// or move, so the phase ended at once (converged). Without this an ordered array ran
+  /// each rest for its whole max_time: its round-off overlaps keep "at rest" from holding.
+  bool nothing_touches = false;
   RestState rest;
   PhaseCost cost;
 };
+
+/// True when no contact of the system's current state overlaps by more than 1e-9 of the
+/// smallest radius (the loads are evaluated first, DemSystem::evaluate_forces).
+bool nothing_touches(DemSystem &system);
 
 /// Called now and then with a phase name and the DEM time spent in it.
 using PhaseProgress = std::function<void(const std::string &phase, double dem_time)>;
@@ -106,7 +115,8 @@ struct GrowthResult
 GrowthResult grow_radii(DemSystem &system, const std::vector<double> &target_radii, const GrowthSettings &settings,
                         const PhaseProgress &progress = {});
 
-/// Runs the system (walls as they are) until `criteria` hold or max_time has passed.
+/// Runs the system (walls as they are) until `criteria` hold or max_time has passed; ends
+/// at once when nothing touches (RelaxResult::nothing_touches), and says so to `progress`.
 RelaxResult relax(DemSystem &system, const RestCriteria &criteria, const std::string &phase = "relax",
                   const PhaseProgress &progress = {});
 

@@ -97,7 +97,8 @@ StoredSpecimen read_case_store(const CaseDescription &c)
     mismatch("contact/particle friction", stored.metadata.contact.particle_friction, c.contact.particle_friction);
   if (!same(stored.metadata.contact.wall_friction, c.contact.wall_friction))
     mismatch("contact/wall friction", stored.metadata.contact.wall_friction, c.contact.wall_friction);
-  if (!same(stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure))
+  // A specimen taken as given carries the pressure it was stored at; the entry is not used.
+  if (s.preparation != "as given" && !same(stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure))
     mismatch("specimen/isotropic pressure", stored.metadata.isotropic_pressure, c.specimen.isotropic_pressure);
   return stored;
 }
@@ -130,7 +131,70 @@ PreparedSpecimen from_store(const CaseDescription &c)
   return out;
 }
 
+/// `preparation = as given` of a text source: the file's spheres, and the velocities a
+/// LAMMPS data file lists, in the file's box with the case's contact law and friction,
+/// exactly as read (no rest, no consolidation).
+PreparedSpecimen as_given(const CaseDescription &c)
+{
+  const auto start = std::chrono::steady_clock::now();
+  Packing p = read_case_packing(c);
+  p.density = c.specimen.density;
+  PreparedSpecimen out{make_system(p, c.contact, c.dem), {}};
+  PreparationRecord &rec = out.record;
+  rec.method = "text file " + c.specimen.text_file + " as given (no rest, no consolidation)";
+  rec.seed = c.seed;
+  rec.particles = p.size();
+  rec.size_distribution = "from file";
+  rec.box_size = (p.box_max - p.box_min).x();
+  rec.initial_packing_fraction = rec.grown_packing_fraction = rec.final_packing_fraction = p.packing_fraction();
+  double r_sum = 0.0;
+  for (double r : p.radius)
+    r_sum += r;
+  rec.mean_radius = r_sum / double(p.size());
+  rec.wall_seconds = seconds_since(start);
+  return out;
+}
+
 } // namespace
+
+std::vector<std::string> ignored_specimen_entries(const CaseDescription &c)
+{
+  const SpecimenParameters &s = c.specimen, d{};
+  std::vector<std::string> out;
+  const auto note = [&](bool differs, const std::string &entry, const std::string &value, const std::string &why) {
+    if (differs)
+      out.push_back(c.file + ": specimen/" + entry + " = " + value + " is not used: " + why);
+  };
+  const auto number = [](double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+  };
+  const bool imported = s.source != "generate";
+  const std::string from = s.source == "store" ? "the stored specimen" : "the packing file";
+  if (imported) {
+    const std::string why = from + " gives the spheres and the box";
+    note(s.particles != d.particles, "particles", std::to_string(s.particles), why);
+    note(s.packing_fraction != d.packing_fraction, "packing fraction", number(s.packing_fraction), why);
+    note(s.radius != d.radius, "radius", number(s.radius), why);
+    note(s.size_distribution != d.size_distribution, "size distribution", s.size_distribution, why);
+    note(s.radius_spread != d.radius_spread, "radius spread", number(s.radius_spread), why);
+    note(s.lognormal_sigma != d.lognormal_sigma, "lognormal sigma", number(s.lognormal_sigma), why);
+    note(s.box_size != d.box_size, "box size", number(s.box_size), why);
+  }
+  note(s.source == "store" && s.density != d.density, "density", number(s.density),
+       "the stored specimen carries its masses");
+  const bool no_rest = s.source == "store" || s.preparation == "as given";
+  note(no_rest && s.aristotelian != d.aristotelian, "aristotelian", "true", "nothing is packed or relaxed");
+  note(no_rest && s.frictionless_relaxation != d.frictionless_relaxation, "frictionless relaxation",
+       s.frictionless_relaxation, "nothing is relaxed");
+  note(s.preparation == "as given" && s.source == "text" && s.isotropic_pressure != d.isotropic_pressure,
+       "isotropic pressure", number(s.isotropic_pressure), "the packing is taken as given, not consolidated");
+  note(s.source != "text" && !s.text_file.empty(), "text file", s.text_file, "source = " + s.source);
+  note(s.source != "store" && !s.store_file.empty(), "store file", s.store_file, "source = " + s.source);
+  note(s.source != "store" && !s.store_name.empty(), "store name", s.store_name, "source = " + s.source);
+  return out;
+}
 
 void check_specimen(const CaseDescription &c)
 {
@@ -141,8 +205,11 @@ void check_specimen(const CaseDescription &c)
   }
   if (s.source != "generate" && s.source != "text")
     throw CaseError(c.file, "specimen/source", "'" + s.source + "' is not one of generate, text, store");
-  if (!(s.isotropic_pressure > 0.0))
-    throw CaseError(c.file, "specimen/isotropic pressure", "must be > 0 to consolidate a specimen");
+  if (s.preparation == "as given" && s.source == "generate")
+    throw CaseError(c.file, "specimen/preparation", "'as given' needs an imported packing (source = text or store)");
+  if (s.preparation != "as given" && !(s.isotropic_pressure > 0.0))
+    throw CaseError(c.file, "specimen/isotropic pressure",
+                    "must be > 0 to consolidate a specimen (or set preparation = as given for an imported packing)");
   if (s.source == "generate")
     growth_target(c);
   else
@@ -254,6 +321,8 @@ PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCri
   check_specimen(c);
   if (s.source == "store")
     return from_store(c);
+  if (s.preparation == "as given")
+    return as_given(c);
 
   const auto start = std::chrono::steady_clock::now();
   PreparationRecord rec;

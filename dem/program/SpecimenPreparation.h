@@ -19,7 +19,10 @@
 //     three wall stresses are within `stress_tolerance` of sigma_0 and the specimen is at
 //     rest (unbalanced-force ratio and kinetic / elastic energy below the thresholds).
 // `source = text` starts at step 3's relaxation with the file's spheres; `source = store`
-// reads a specimen from a core store (SpecimenStore.h), exactly as it was written.
+// reads a specimen from a core store (SpecimenStore.h), exactly as it was written. With
+// `preparation = as given` a text source (xyzr or LAMMPS data, with its velocities) starts
+// the program exactly as read: no rest, no consolidation, no isotropic pressure needed.
+// A rest phase in which nothing touches ends at once and says so (relax()).
 // The same case and seed give the same specimen bit for bit.
 #pragma once
 
@@ -31,6 +34,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace geocomp::dem {
 
@@ -96,6 +100,11 @@ using PreparationProgress = PhaseProgress;
 /// first; the command line calls it for every case that names the DEM engine, `geocomp
 /// check` included, so that what check accepts the DEM accepts.
 void check_specimen(const CaseDescription &c);
+
+/// The `specimen` entries the case's source and preparation do not use, each that differs
+/// from its default, as one message ("<file>: specimen/particles = 5000 is not used: the
+/// packing file gives the spheres and the box"): the command line warns about each once.
+std::vector<std::string> ignored_specimen_entries(const CaseDescription &c);
 
 /// The case's consolidated specimen. Throws CaseError (file, parameter, message) for
 /// inputs that cannot make one (check_specimen), std::runtime_error when a phase does not

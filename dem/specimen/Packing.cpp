@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <algorithm>
 #include <iomanip>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -103,6 +105,33 @@ void write_xyzr(const std::filesystem::path &file, const Packing &p, int digits)
   });
 }
 
+namespace {
+/// One "id vx vy vz [wx wy wz]" line of a Velocities section into the atom's slot.
+void read_velocity_line(const std::filesystem::path &file, int n, const std::string &line,
+                        const std::map<long long, std::size_t> &index, Packing &p, std::vector<bool> &seen)
+{
+  std::istringstream s(line);
+  long long id;
+  Eigen::Vector3d v, w = Eigen::Vector3d::Zero();
+  if (!(s >> id >> v[0] >> v[1] >> v[2]))
+    throw PackingFileError(file.string(), n, "expected a Velocities line 'id vx vy vz [wx wy wz]', got '" + line + "'");
+  s >> w[0] >> w[1] >> w[2];
+  const auto it = index.find(id);
+  if (it == index.end())
+    throw PackingFileError(file.string(), n, "velocity of atom " + std::to_string(id) + ", which the Atoms section does not list");
+  if (!v.allFinite() || !w.allFinite())
+    throw PackingFileError(file.string(), n, "expected finite numbers");
+  if (p.velocity.empty()) {
+    p.velocity.assign(p.size(), Eigen::Vector3d::Zero());
+    p.angular_velocity.assign(p.size(), Eigen::Vector3d::Zero());
+    seen.assign(p.size(), false);
+  }
+  p.velocity[it->second] = v;
+  p.angular_velocity[it->second] = w;
+  seen[it->second] = true;
+}
+} // namespace
+
 Packing read_lammps_data(const std::filesystem::path &file)
 {
   std::ifstream in = open(file);
@@ -110,8 +139,10 @@ Packing read_lammps_data(const std::filesystem::path &file)
   std::string line;
   int n = 0;
   long long atoms = -1;
-  bool in_atoms = false;
-  bool have_density = false;
+  enum class Section { header, atoms, velocities, other } at = Section::header;
+  bool have_atoms = false, have_density = false;
+  std::map<long long, std::size_t> index; // atom id -> position in the packing
+  std::vector<bool> seen;                 // atoms given a velocity
   static const std::regex bounds(R"(^\s*([-+0-9.eE]+)\s+([-+0-9.eE]+)\s+([xyz])lo\s+[xyz]hi)");
   static const std::regex count(R"(^\s*([0-9]+)\s+atoms\s*$)");
   static const std::regex section(R"(^\s*([A-Z][A-Za-z ]*?)\s*(#.*)?$)");
@@ -119,26 +150,30 @@ Packing read_lammps_data(const std::filesystem::path &file)
     ++n;
     if (n == 1)
       continue; // title line
+    if (line.find_first_not_of(" \t\r") == std::string::npos)
+      continue;
     std::smatch m;
-    if (!in_atoms) {
+    if (std::regex_match(line, m, section)) {
+      at = m[1] == "Atoms" ? Section::atoms : m[1] == "Velocities" ? Section::velocities : Section::other;
+      have_atoms = have_atoms || at == Section::atoms;
+      continue;
+    }
+    if (at == Section::header) {
       if (std::regex_search(line, m, bounds)) {
         const int a = m[3].str()[0] - 'x';
         p.box_min[a] = std::stod(m[1]);
         p.box_max[a] = std::stod(m[2]);
       } else if (std::regex_match(line, m, count)) {
         atoms = std::stoll(m[1]);
-      } else if (std::regex_match(line, m, section) && m[1] == "Atoms") {
-        in_atoms = true;
       }
       continue;
     }
-    if (line.find_first_not_of(" \t\r") == std::string::npos) {
-      if (!p.radius.empty())
-        break; // end of the Atoms section
+    if (at == Section::velocities) {
+      read_velocity_line(file, n, line, index, p, seen);
       continue;
     }
-    if (std::regex_match(line, m, section))
-      break;
+    if (at != Section::atoms)
+      continue; // sections geocomp does not use (Masses, ...)
     std::istringstream s(line);
     long long id, type;
     double d, rho;
@@ -147,6 +182,8 @@ Packing read_lammps_data(const std::filesystem::path &file)
       throw PackingFileError(file.string(), n,
                              "expected an atom_style granular line 'id type diameter density x y z', got '" + line + "'");
     check_particle(file, n, x, 0.5 * d);
+    if (!index.emplace(id, p.size()).second)
+      throw PackingFileError(file.string(), n, "atom " + std::to_string(id) + " is listed twice");
     if (!have_density) {
       p.density = rho;
       have_density = true;
@@ -154,11 +191,13 @@ Packing read_lammps_data(const std::filesystem::path &file)
     p.position.push_back(x);
     p.radius.push_back(0.5 * d);
   }
-  if (!in_atoms)
+  if (!have_atoms)
     throw PackingFileError(file.string(), 0, "has no 'Atoms' section");
   if (atoms >= 0 && static_cast<long long>(p.size()) != atoms)
     throw PackingFileError(file.string(), 0, "declares " + std::to_string(atoms) + " atoms but lists " +
                                                std::to_string(p.size()));
+  if (!p.velocity.empty() && std::find(seen.begin(), seen.end(), false) != seen.end())
+    throw PackingFileError(file.string(), 0, "its Velocities section does not list every atom");
   check_box(file, p);
   return p;
 }
@@ -177,6 +216,12 @@ void write_lammps_data(const std::filesystem::path &file, const Packing &p, int 
     for (std::size_t i = 0; i < p.size(); ++i)
       out << i + 1 << " 1 " << 2.0 * p.radius[i] << " " << p.density << " " << p.position[i][0] << " "
           << p.position[i][1] << " " << p.position[i][2] << "\n";
+    if (!p.velocity.empty()) {
+      out << "\nVelocities\n\n";
+      for (std::size_t i = 0; i < p.size(); ++i)
+        out << i + 1 << " " << p.velocity[i][0] << " " << p.velocity[i][1] << " " << p.velocity[i][2] << " "
+            << p.angular_velocity[i][0] << " " << p.angular_velocity[i][1] << " " << p.angular_velocity[i][2] << "\n";
+    }
     if (!out)
       throw PackingFileError(file.string(), 0, "could not be written");
   });

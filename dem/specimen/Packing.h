@@ -3,7 +3,8 @@
 // the unit of exchange with other tools. The DEM engine loads a Packing into its
 // particle arrays; importers and exporters read and write other tools' formats:
 //   - text "x y z r" per line, box in a '#' header line (the format of bench/*.xyzr);
-//   - LAMMPS/LIGGGHTS data files with atom_style granular ("id type diameter density x y z").
+//   - LAMMPS/LIGGGHTS data files with atom_style granular ("id type diameter density x y z"),
+//     and their Velocities section ("id vx vy vz wx wy wz") when there is one.
 #include <Eigen/Dense>
 
 #include <filesystem>
@@ -25,6 +26,9 @@ struct Packing {
   std::vector<Eigen::Vector3d> position;
   std::vector<double> radius;
   double density = 2650.0; ///< [kg/m^3], one material per packing
+  /// [m/s] and [1/s], by particle, when the file gives them (a LAMMPS data file's
+  /// Velocities section); empty otherwise (at rest).
+  std::vector<Eigen::Vector3d> velocity, angular_velocity;
 
   std::size_t size() const { return radius.size(); }
   double box_volume() const { return (box_max - box_min).prod(); }
