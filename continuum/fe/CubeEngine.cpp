@@ -100,6 +100,8 @@ void check_parameters(const CubeParameters &p)
     fail("band reference width", "must be >= 0");
   if (p.localization_directions < 10)
     fail("localization directions", "must be >= 10");
+  if (!(p.amg_rebuild_growth >= 0.0))
+    fail("amg rebuild growth", "must be >= 0");
   if (!(p.apex_tangent_fraction >= 0.0 && p.apex_tangent_fraction < 1.0))
     fail("apex tangent fraction", "must be in [0, 1)");
   if (p.output_every < 1)
@@ -579,98 +581,6 @@ double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
   return rhs.l2_norm();
 }
 
-// @sect3{Linear solver}
-//
-// GMRES for the non-symmetric tangent of non-associated flow, CG for a symmetric one, or a
-// direct solver (Amesos/KLU with Trilinos, MUMPS with PETSc). The Krylov solvers use
-// algebraic multigrid: ML smoothed aggregation (Trilinos), or hypre's BoomerAMG (PETSc;
-// about 9x slower here, the scalar AMG does not know the three displacement components
-// belong together). The tolerance is a reduction of the initial residual.
-//
-// ML's near-null space (`near null space`): rigid-body = the six modes of
-// rigid_body_modes() handed over as ML "null space: type = pre-computed" (deal.II 9.4's
-// AdditionalData::constant_modes is a vector<vector<bool>> and carries only translations),
-// or translations = the three DoFTools::extract_constant_modes vectors. Smoothed aggregation
-// interpolates exactly what the near-null space spans; with the translations alone the
-// coarse levels miss the rotations, which the Chebyshev smoother reduces only slowly, and
-// after localization the blocks either side of a band move nearly as rigid bodies. With six
-// modes each aggregate carries six coarse unknowns instead of three: ML's set-up and each
-// V-cycle cost more, the Krylov iterations drop by 1/4 to 1/3 (docs/continuum-fe.md).
-// The hierarchy is rebuilt for every solve (the tangent changes at each Newton iteration).
-unsigned CubeEngine::Impl::solve_linear(double reduction)
-{
-  Timer timer;
-  // Relative reduction, with an absolute floor well below what Newton asks for (a right-
-  // hand side already at round-off cannot be reduced further).
-  ReductionControl control_(prm.max_linear_iterations, 1e-3 * prm.newton_tolerance * residual_scale, reduction);
-  update = 0.0;
-#if defined(GEOCOMP_CUBE_USE_PETSC)
-  if (prm.linear_solver == "direct") {
-    PETScWrappers::SparseDirectMUMPS solver(control_, comm);
-    solver.solve(matrix, update, rhs);
-  } else {
-    std::unique_ptr<PETScWrappers::PreconditionBase> preconditioner;
-    if (prm.preconditioner != "jacobi") {
-      PETScWrappers::PreconditionBoomerAMG::AdditionalData data;
-      data.symmetric_operator = prm.linear_solver == "cg";
-      data.strong_threshold = 0.7; // measured best for this 3-component problem (docs)
-      preconditioner = std::make_unique<PETScWrappers::PreconditionBoomerAMG>(matrix, data);
-    } else {
-      preconditioner = std::make_unique<PETScWrappers::PreconditionJacobi>(matrix);
-    }
-    if (prm.linear_solver == "cg") {
-      PETScWrappers::SolverCG solver(control_, comm);
-      solver.solve(matrix, update, rhs, *preconditioner);
-    } else {
-      PETScWrappers::SolverGMRES solver(control_, comm,
-                                        PETScWrappers::SolverGMRES::AdditionalData(100, true));
-      solver.solve(matrix, update, rhs, *preconditioner);
-    }
-  }
-#else
-  if (prm.linear_solver == "direct") {
-    TrilinosWrappers::SolverDirect solver(control_);
-    solver.solve(matrix, update, rhs);
-  } else {
-    std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
-    if (prm.preconditioner != "jacobi") {
-      TrilinosWrappers::PreconditionAMG::AdditionalData data;
-      data.elliptic = true;
-      data.higher_order_elements = prm.degree > 1;
-      data.smoother_sweeps = 2;
-      data.aggregation_threshold = 0.02;
-      data.constant_modes = constant_modes; // the translations, and ML's "PDE equations" = 3
-      Teuchos::ParameterList ml;
-      std::unique_ptr<Epetra_MultiVector> translations;
-      data.set_parameters(ml, translations, matrix);
-      if (prm.near_null_space == "rigid-body") {
-        ml.set("null space: type", "pre-computed");
-        ml.set("null space: dimension", 6);
-        ml.set("null space: vectors", rigid_body_modes.data());
-      }
-      auto amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      amg->initialize(matrix, ml);
-      preconditioner = std::move(amg);
-    } else {
-      auto jacobi = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
-      jacobi->initialize(matrix);
-      preconditioner = std::move(jacobi);
-    }
-    if (prm.linear_solver == "cg") {
-      TrilinosWrappers::SolverCG solver(control_);
-      solver.solve(matrix, update, rhs, *preconditioner);
-    } else {
-      TrilinosWrappers::SolverGMRES solver(control_, TrilinosWrappers::SolverGMRES::AdditionalData(false, 100));
-      solver.solve(matrix, update, rhs, *preconditioner);
-    }
-  }
-#endif
-  stats.solve_seconds += timer.wall_time();
-  stats.linear_iterations += control_.last_step();
-  pcout << "      linear: " << control_.last_step() << " its, " << timer.wall_time() << " s, reduction " << reduction << '\n';
-  return control_.last_step();
-}
-
 // @sect3{Newton-Raphson for one load step}
 //
 // Predictor: the tangent at the committed state with the increments of the wall
@@ -967,6 +877,7 @@ void CubeEngine::begin_control(const StageControl &control)
   m.control = control;
   m.has_control = true;
   m.build_constraints();
+  m.preconditioner_stale = true; // other constrained rows
   // Ramp only the stress targets that change (a control resumed after a branch must
   // follow exactly the path it would have followed without the branch).
   bool changes = false;
@@ -1153,6 +1064,7 @@ void CubeEngine::restore(const EngineState &state)
   m.committed_wall_stress = s.wall_stress;
   m.onset_position = s.onset_position;
   m.onset_normal = s.onset_normal;
+  m.preconditioner_stale = true;
 }
 
 } // namespace geocomp::continuum

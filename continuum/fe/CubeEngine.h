@@ -75,6 +75,10 @@ struct CubeParameters {
   /// and the three rotations (default), translations = the translations only.
   std::string near_null_space = "rigid-body";
   double linear_tolerance = 1e-10;  ///< relative residual of the Krylov solve
+  /// ML's hierarchy is kept across Newton iterations and load steps, and rebuilt when a solve
+  /// needs more than this times (plus 5) the Krylov iterations of the first solve after the
+  /// last build (CubeSolver.cpp); 0 = rebuild for every solve.
+  double amg_rebuild_growth = 1.5;
   unsigned max_linear_iterations = 5000;
   // Newton and load stepping.
   double newton_tolerance = 1e-9;   ///< |R_free| <= tol * max(|F_int|, |F_ext|)
@@ -111,6 +115,7 @@ struct CubeStatistics {
   unsigned newton_iterations = 0; ///< Newton iterations in converged steps, total
   unsigned cutbacks = 0;          ///< total
   unsigned linear_iterations = 0; ///< total Krylov iterations
+  unsigned preconditioner_builds = 0; ///< AMG (or Jacobi) set-ups, total
   double assembly_seconds = 0.0, solve_seconds = 0.0, total_seconds = 0.0;
   /// Residual history |R|/scale of the last converged step (for convergence-rate tests).
   std::vector<double> last_step_residuals;

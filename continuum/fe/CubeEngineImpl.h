@@ -25,6 +25,7 @@ namespace geocomp::continuum {
 namespace LA = dealii::LinearAlgebraPETSc;
 }
 #else
+#include <deal.II/lac/trilinos_precondition.h>
 namespace geocomp::continuum {
 namespace LA = dealii::LinearAlgebraTrilinos;
 }
@@ -88,7 +89,9 @@ struct CubeEngine::Impl {
   /// Wall tractions sigma*_a e_a on the faces x_a = L of stress axes, per current projected
   /// area at finite strain (with the load stiffness when the matrix is assembled).
   void cell_tractions(CellTerms &terms, double t);
+  // ---- linear solver (CubeSolver.cpp)
   unsigned solve_linear(double reduction); ///< K du = rhs to a relative reduction; iterations
+  void build_preconditioner();             ///< the preconditioner on the current matrix (Trilinos)
   void commit();
   void revert();
   void update_localization(double t);
@@ -122,6 +125,12 @@ struct CubeEngine::Impl {
   dl::AffineConstraints<double> predictor_constraints; ///< with the step's wall increments
 
   LA::MPI::SparseMatrix matrix;
+#if !defined(GEOCOMP_CUBE_USE_PETSC)
+  /// Kept across solves while it serves (CubeSolver.cpp).
+  std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
+#endif
+  bool preconditioner_stale = true;                ///< rebuild before the next solve
+  unsigned preconditioner_reference_iterations = 0; ///< Krylov its of the first solve after a build
   std::vector<std::vector<bool>> constant_modes; ///< components of the dofs, for ML
   /// The six rigid-body modes over the locally owned dofs (row map order), column-major,
   /// n_owned x 6: translations x, y, z, then rotations about x, y, z through the centre.

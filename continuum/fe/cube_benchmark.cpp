@@ -5,7 +5,7 @@
 //     n=8 degree=1 program=plane-strain|triaxial|isochoric strain=0.02 samples=20
 //     solver=gmres|cg|direct regularization=crack-band|none integration=full|b-bar radius=0.2 factor=0.8
 //     nullspace=rigid-body|translations steps=2 output=DIR verbose=0 localization=200 kpeak=0.002 kres=0.02 phi=30 psi=5
-//     kinematics=finite|small
+//     kinematics=finite|small reuse=1.5 (amg_rebuild_growth; 0: rebuild ML for every solve)
 #include "common/ProgramRunner.h"
 #include "continuum/fe/CubeEngine.h"
 
@@ -54,6 +54,7 @@ int main(int argc, char **argv)
   cp.regularization = get("regularization", "crack-band");
   cp.volumetric_integration = get("integration", "full");
   cp.kinematics = parse_kinematics(get("kinematics", "finite") + " strain");
+  cp.amg_rebuild_growth = std::stod(get("reuse", "1.5"));
   cp.imperfection_radius = std::stod(get("radius", "0.2"));
   cp.imperfection_cohesion_factor = std::stod(get("factor", "0.8"));
   cp.imperfection_centre = Vector3(std::stod(get("cx", "0.5")), std::stod(get("cy", "0.5")), std::stod(get("cz", "0.5")));
@@ -118,9 +119,9 @@ int main(int argc, char **argv)
         std::printf(" %.4g", x);
       std::printf("\n");
     }
-    std::printf("# steps %u newton %u (%.2f/step) cutbacks %u linear its %u (%.1f/solve)\n", st.steps,
-                st.newton_iterations, double(st.newton_iterations) / st.steps, st.cutbacks, st.linear_iterations,
-                double(st.linear_iterations) / st.newton_iterations);
+    std::printf("# steps %u newton %u (%.2f/step) cutbacks %u linear its %u (%.1f/solve) preconditioner builds %u\n",
+                st.steps, st.newton_iterations, double(st.newton_iterations) / st.steps, st.cutbacks,
+                st.linear_iterations, double(st.linear_iterations) / st.newton_iterations, st.preconditioner_builds);
     std::printf("# seconds: setup %.2f assembly %.2f solve %.2f advance %.2f total %.2f\n", setup,
                 st.assembly_seconds, st.solve_seconds, st.total_seconds, total);
   }

@@ -506,6 +506,7 @@ TEST(CubeEngine, RigidBodyNearNullSpaceSavesKrylovIterations)
   for (const std::string space : {"translations", "rigid-body"}) {
     CubeParameters cp = small_cube(8);
     cp.near_null_space = space;
+    cp.amg_rebuild_growth = 0.0; // a fresh hierarchy for every solve: the near-null spaces alone differ
     cp.linear_tolerance = 1e-10;
     cp.newton_tolerance = 1e-8;
     cp.imperfection_radius = 0.3;
@@ -518,4 +519,33 @@ TEST(CubeEngine, RigidBodyNearNullSpaceSavesKrylovIterations)
                 st.newton_iterations, per_solve[space]);
   }
   EXPECT_LT(per_solve["rigid-body"], 0.85 * per_solve["translations"]);
+}
+
+// ML's hierarchy kept across Newton iterations and load steps (CubeSolver.cpp): on the same
+// imperfect, softening cube it is built far less often than once per solve, the run reaches
+// the same curve (to the Newton tolerance), and a solve never needs more than the growth
+// allowance over the first solve after a build before the next build.
+TEST(CubeEngine, KeptAmgHierarchyBuildsRarelyAndGivesTheSameCurve)
+{
+  std::map<double, Response> runs;
+  std::map<double, CubeStatistics> stats;
+  for (const double growth : {0.0, 1.5}) {
+    CubeParameters cp = small_cube(8);
+    cp.amg_rebuild_growth = growth;
+    cp.linear_tolerance = 1e-10;
+    cp.newton_tolerance = 1e-9;
+    cp.imperfection_radius = 0.3;
+    cp.imperfection_cohesion_factor = 0.8;
+    CubeEngine engine(cp, make_material_factory({"mohr-coulomb", softening_material(), {}, {}}), MPI_COMM_WORLD);
+    runs[growth] = ProgramRunner(plane_strain(0.006, 1.0), engine).run();
+    stats[growth] = engine.statistics();
+    std::printf("growth %.1f: %u Newton iterations, %u AMG builds, %.1f GMRES iterations per solve\n", growth,
+                stats[growth].newton_iterations, stats[growth].preconditioner_builds,
+                double(stats[growth].linear_iterations) / stats[growth].newton_iterations);
+  }
+  EXPECT_EQ(stats[0.0].preconditioner_builds, stats[0.0].newton_iterations); // one per solve
+  EXPECT_LT(stats[1.5].preconditioner_builds, stats[1.5].newton_iterations / 3);
+  ASSERT_EQ(runs[0.0].samples.size(), runs[1.5].samples.size());
+  for (std::size_t k = 0; k < runs[0.0].samples.size(); ++k)
+    EXPECT_LT((runs[0.0].samples[k].stress - runs[1.5].samples[k].stress).norm(), 1e-6 * p) << "sample " << k;
 }
