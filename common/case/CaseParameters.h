@@ -53,7 +53,11 @@ struct ContactParameters {
   double restitution = 0.5;             ///< c_r
   double normal_stiffness = 0.0;        ///< [N/m] given directly; 0 = from E*, R*, m*, V_c
   double normal_damping = 0.0;          ///< [N s/m] given directly; 0 = from c_r
+  double normal_damping_per_mass = 0.0; ///< [1/s] LIGGGHTS gamma_n: c_n = gamma_n m*; 0 = not used
   double tangential_stiffness_ratio = 2.0 / 7.0; ///< k_t / k_n
+  double tangential_stiffness = 0.0;    ///< [N/m] k_t given directly; 0 = the ratio
+  double tangential_damping = 0.0;      ///< [N s/m] c_t given directly; 0 = the ratio
+  double tangential_damping_ratio = -1.0; ///< c_t / c_n; -1 = k_t / k_n (S0 eq. (2))
   double particle_friction = 0.4;       ///< mu_s
   double wall_friction = 0.0;           ///< mu_p
   // Optional contact parts (ContactPartsSection.cpp).

@@ -51,9 +51,11 @@ std::string specimen_key(const CaseDescription &c)
     << s.store_name << ' ' << s.text_file << "\nN " << s.particles << "\neta " << s.packing_fraction << "\nR "
     << s.radius << ' ' << s.size_distribution << ' ' << s.radius_spread << ' ' << s.lognormal_sigma << "\nL0 "
     << s.box_size << "\nrho " << s.density << "\nsigma0 " << s.isotropic_pressure << "\naristotelian "
-    << s.aristotelian << "\nrelaxation " << s.frictionless_relaxation << "\ncontact " << k.model << ' ' << k.youngs_modulus << ' ' << k.poisson_ratio << ' '
+    << s.aristotelian << "\nrelaxation " << s.frictionless_relaxation << "\npreparation " << s.preparation << "\ncontact " << k.model << ' ' << k.youngs_modulus << ' ' << k.poisson_ratio << ' '
     << k.impact_velocity << ' ' << k.restitution << ' ' << k.normal_stiffness << ' ' << k.normal_damping << ' '
-    << k.tangential_stiffness_ratio << ' ' << k.particle_friction << ' ' << k.wall_friction << "\ndem "
+    << k.tangential_stiffness_ratio << ' ' << k.particle_friction << ' ' << k.wall_friction << ' '
+    << k.normal_damping_per_mass << ' ' << k.tangential_stiffness << ' ' << k.tangential_damping << ' '
+    << k.tangential_damping_ratio << "\ndem "
     << d.time_step_safety << ' ' << d.threads << ' ' << d.local_damping << ' ' << d.skin << ' '
     << d.servo_max_velocity << ' ' << d.servo_gain << ' ' << d.servo_integral_gain << "\n";
   return o.str();

@@ -18,6 +18,28 @@ namespace geocomp::dem {
 // @sect4{Contact law and system from the case file}
 
 namespace {
+/// k_t given in N/m or as a ratio of k_n; c_t given in N s/m, as a ratio of c_n, or by
+/// default in the proportion of the springs: S0 eq. (2) uses k_n and c_n for the tangential
+/// spring and dashpot, so with k_t = r k_n the dashpot is c_t = r c_n.
+LinearTangential linear_tangential(const ContactParameters &c)
+{
+  LinearTangential::Parameters t;
+  t.stiffness_is_ratio = !(c.tangential_stiffness > 0.0);
+  t.k_t = t.stiffness_is_ratio ? c.tangential_stiffness_ratio : c.tangential_stiffness;
+  t.damping_is_ratio = !(c.tangential_damping > 0.0);
+  if (!t.damping_is_ratio)
+    t.c_t = c.tangential_damping;
+  else if (c.tangential_damping_ratio >= 0.0)
+    t.c_t = c.tangential_damping_ratio;
+  else if (t.stiffness_is_ratio)
+    t.c_t = c.tangential_stiffness_ratio;
+  else if (c.normal_stiffness > 0.0)
+    t.c_t = c.tangential_stiffness / c.normal_stiffness;
+  else
+    throw std::invalid_argument("make_contact_model: c_t = (k_t/k_n) c_n needs k_n in N/m when k_t is given in N/m");
+  return LinearTangential(t);
+}
+
 ContactModel make_base_contact_model(const ContactParameters &c)
 {
   if (c.model == "hertz-mindlin") {
@@ -47,14 +69,14 @@ ContactModel make_base_contact_model(const ContactParameters &c)
   if (c.normal_damping > 0.0) {
     n.damping_input = LinearNormal::Damping::direct;
     n.c_n = c.normal_damping;
+  } else if (c.normal_damping_per_mass > 0.0) {
+    n.damping_input = LinearNormal::Damping::per_unit_mass; // LIGGGHTS gamma_n
+    n.gamma_n = c.normal_damping_per_mass;
   } else {
     n.damping_input = LinearNormal::Damping::restitution; // S0 c_n
     n.restitution = c.restitution;
   }
-  // S0 eq. (2) uses k_n and c_n for the tangential spring and dashpot; with a stiffness
-  // ratio r the dashpot keeps the same ratio: k_t = r k_n, c_t = r c_n.
-  const double r = c.tangential_stiffness_ratio;
-  return LinearSpringDashpot(LinearNormal(n), LinearTangential::with_ratio(r, r));
+  return LinearSpringDashpot(LinearNormal(n), linear_tangential(c));
 }
 } // namespace
 

@@ -52,8 +52,9 @@
 namespace geocomp::dem {
 
 /// The case file's contact law as the core's ContactModel: linear (S0 eq. (1)-(2): k_n given
-/// or S0's secant Hertz stiffness at V_c, c_n given or from the restitution, k_t and c_t as
-/// ratios of k_n and c_n) or hertz-mindlin (S4, damping from the restitution).
+/// or S0's secant Hertz stiffness at V_c; c_n given, per unit effective mass (LIGGGHTS
+/// gamma_n) or from the restitution; k_t given or a ratio of k_n; c_t given, a ratio of c_n,
+/// or by default c_n times k_t/k_n) or hertz-mindlin (S4, damping from the restitution).
 ContactModel make_contact_model(const ContactParameters &c);
 
 /// A DemSystem holding the packing in its box (six walls with mu_p, spheres with the
