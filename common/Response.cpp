@@ -19,4 +19,12 @@ std::vector<const ResponseSample *> Response::path(int branch) const
   return out;
 }
 
+Response with_interval_means(Response response)
+{
+  if (response.interval_means)
+    for (ResponseSample &s : response.samples)
+      s.stress = s.stress_mean;
+  return response;
+}
+
 } // namespace geocomp

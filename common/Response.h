@@ -63,4 +63,10 @@ struct Response {
   std::vector<const ResponseSample *> path(int branch) const;
 };
 
+/// The response as metrics and reports read it: each sample's stress replaced by its
+/// interval mean when the engine gives means (the DEM: a sample instant catches the wall
+/// force mid-fluctuation, the mean is what Yade and LIGGGHTS users compare); unchanged
+/// otherwise. The instantaneous stresses stay in the results file.
+Response with_interval_means(Response response);
+
 } // namespace geocomp

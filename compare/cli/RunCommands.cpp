@@ -339,7 +339,14 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
   compare::MetricOptions options;
   options.kind = in.kind;
   options.axial = in.axial;
-  for (const auto &[engine, response] : runs) {
+  for (const auto &[engine, instantaneous] : runs) {
+    // Metrics, curves and tables read each engine's interval-mean stresses (the DEM's; the
+    // continuum's samples are its states), and the report says so.
+    const Response response = with_interval_means(instantaneous);
+    if (instantaneous.interval_means)
+      in.notes.push_back(label_of(engine) + ": stresses in the curves, tables and metrics are means over each "
+                         "sampling interval (the instantaneous samples are /response/stress of " +
+                         results_file(engine) + ").");
     in.responses.push_back({label_of(engine), response});
     try {
       in.metrics.push_back({label_of(engine), compare::compute_metrics(response, options)});

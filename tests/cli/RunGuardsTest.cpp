@@ -2,8 +2,8 @@
 // whose stress runs away, stops with exit 1, says why on stderr, and leaves a readable
 // results file with the samples so far and /meta/status saying where and why; a stage
 // that ends on its max duration before its stop condition writes everything, warns, says
-// so in /meta/status and exits 1. A small generated specimen (250 spheres) keeps each run
-// to a few seconds.
+// so in /meta/status and exits 1. The report of a DEM run reads the interval-mean stresses
+// and says so. A small generated specimen (250 spheres) keeps each run to a few seconds.
 #include "common/ResponseFile.h"
 #include "tests/common/CommandRun.h"
 
@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <unistd.h>
 
@@ -106,4 +107,24 @@ TEST(RunGuards, AStageEndedByItsMaxDurationWarnsWritesItsStatusAndExitsOne)
   const auto again = run_dem(c);
   EXPECT_EQ(again.code, 1);
   EXPECT_NE(again.err.find("warning: dem: " + why), std::string::npos) << again.err;
+}
+
+TEST(RunGuards, TheReportOfADemRunReadsTheIntervalMeansAndSaysSo)
+{
+  Scratch s;
+  const fs::path c = write_case(s.dir, "means",
+                                "    set x = stress -1e5\n    set y = stress -1e5\n    set z = rate -0.5\n"
+                                "    set stop when = eps_zz <= -0.01\n    set max duration = 1\n");
+  ASSERT_EQ(run_dem(c).code, 0);
+  const auto r = geocomp::test::run_program({GEOCOMP_EXE, "report", c.string()}, {}, 120.0);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(s.dir / "means/report/index.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find("DEM: stresses in the curves, tables and metrics are means over each sampling interval"),
+            std::string::npos);
+  const geocomp::Response q = geocomp::read_response(s.dir / "means/dem.h5");
+  EXPECT_TRUE(q.interval_means);
+  EXPECT_NE(q.samples.back().stress_mean, q.samples.back().stress);
+  const geocomp::Response m = geocomp::with_interval_means(q);
+  EXPECT_EQ(m.samples.back().stress, q.samples.back().stress_mean);
 }
