@@ -1,4 +1,5 @@
 #include "Engines.h"
+#include "Progress.h"
 #include "CaseValidation.h"
 
 #include "continuum/driver/CaseMaterial.h"
@@ -89,9 +90,9 @@ std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const 
   }
   std::cout << "dem: preparing the specimen (" << c.specimen.particles << " spheres, sigma_0 = "
             << c.specimen.isotropic_pressure << " Pa)\n";
-  dem::PreparedSpecimen s = dem::prepare_specimen(c, {}, [](const std::string &phase, double t) {
-    std::cout << "  " << phase << ": " << t << " s of DEM time\n" << std::flush;
-  });
+  PhasePrinter phases("dem");
+  dem::PreparedSpecimen s = dem::prepare_specimen(c, {}, std::ref(phases));
+  phases.finish();
   std::cout << "dem: specimen: " << s.record.describe() << "\n";
   auto e = std::make_unique<dem::DemEngine>(std::move(s.system), p);
   fs::create_directories(dir);

@@ -1,12 +1,12 @@
 // `geocomp pack`: builds a case's specimen (S0 radius growth + consolidation) into a core store.
 #include "CaseValidation.h"
 #include "Commands.h"
+#include "Progress.h"
 
 #include "common/case/CaseParameters.h"
 #include "dem/program/SpecimenPreparation.h"
 #include "dem/program/SpecimenStore.h"
 
-#include <chrono>
 #include <filesystem>
 #include <iostream>
 
@@ -61,15 +61,9 @@ Command pack_command()
               << ", sigma_0 = " << d.specimen.isotropic_pressure << " Pa"
               << (d.specimen.aristotelian ? " (Aristotelian growth)" : "") << " -> " << store.string() << " : "
               << name << "\n";
-    const auto t0 = std::chrono::steady_clock::now();
-    double last = 0.0;
-    dem::PreparedSpecimen s = dem::prepare_specimen(d, {}, [&](const std::string &phase, double t) {
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (wall - last >= 10.0) {
-        last = wall;
-        std::cout << "  " << phase << ": " << t << " s of DEM time, " << wall << " s wall\n" << std::flush;
-      }
-    });
+    PhasePrinter phases("pack");
+    dem::PreparedSpecimen s = dem::prepare_specimen(d, {}, std::ref(phases));
+    phases.finish();
     std::cout << "pack: " << s.record.describe() << "\n";
     try {
       dem::write_stored_specimen(store, name, s, dem::SpecimenMetadata::from_case(d, s));

@@ -179,8 +179,8 @@ GrowthResult grow_radii(DemSystem &system, const std::vector<double> &target, co
     system.set_radii(radii);
     f = f_next;
     run_recording_last(system, g.interval);
-    if (progress && ++chunks % 1000 == 0)
-      progress("growth", system.time() - time0);
+    if (progress && ++chunks % 100 == 0) // the radius factor's way from f0 to 1, on a log scale
+      progress("growth", system.time() - time0, std::log(f / r.initial_factor) / std::log(1.0 / r.initial_factor));
   }
   system.set_time_step(g.time_step_safety * system.critical_time_step());
   r.cost.steps = system.n_steps() - steps0;
@@ -188,7 +188,7 @@ GrowthResult grow_radii(DemSystem &system, const std::vector<double> &target, co
   r.cost.wall_seconds = seconds_since(t0);
   r.rebuilds = system.n_rebuilds() - builds0;
   if (progress)
-    progress("growth", r.cost.time);
+    progress("growth", r.cost.time, 1.0);
   return r;
 }
 
@@ -215,10 +215,11 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
     r.converged = r.nothing_touches = true;
     r.rest = rest_state(system);
     if (progress)
-      progress(phase + ": nothing touches, ended at once", 0.0);
+      progress(phase + ": nothing touches, ended at once", 0.0, 1.0);
     return r;
   }
   std::uint64_t checks = 0;
+  double first_unbalanced = 0.0, fraction = 0.0; // the progress estimate
   // FIRE state (RestCriteria::fire).
   const double dt0 = system.time_step(), damping0 = system.local_damping_coefficient();
   double dt = dt0, alpha = k.fire_alpha;
@@ -251,8 +252,11 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
     r.converged = k.satisfied_by(r.rest);
     if (r.converged || system.time() - time0 >= k.max_time)
       break;
-    if (progress && ++checks % 20 == 0)
-      progress(phase, system.time() - time0);
+    if (checks++ == 0)
+      first_unbalanced = r.rest.unbalanced;
+    fraction = std::max(fraction, log_progress(first_unbalanced, r.rest.unbalanced, k.unbalanced));
+    if (progress && checks % 5 == 0)
+      progress(phase, system.time() - time0, fraction);
   }
   if (k.fire) {
     system.set_time_step(dt0);
@@ -262,7 +266,7 @@ RelaxResult relax(DemSystem &system, const RestCriteria &k, const std::string &p
   r.cost.time = system.time() - time0;
   r.cost.wall_seconds = seconds_since(t0);
   if (progress)
-    progress(phase, r.cost.time);
+    progress(phase, r.cost.time, 1.0);
   return r;
 }
 

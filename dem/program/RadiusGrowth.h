@@ -18,6 +18,7 @@
 
 #include "dem/DemSystem.h"
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -91,8 +92,21 @@ struct RelaxResult
 /// smallest radius (the loads are evaluated first, DemSystem::evaluate_forces).
 bool nothing_touches(DemSystem &system);
 
-/// Called now and then with a phase name and the DEM time spent in it.
-using PhaseProgress = std::function<void(const std::string &phase, double dem_time)>;
+/// Called now and then with a phase name, the DEM time spent in it and the best estimate
+/// of how far the phase is, in [0, 1] (1 when it ends): growth by its radius factor, rests
+/// and consolidations by log_progress() of their residuals.
+using PhaseProgress = std::function<void(const std::string &phase, double dem_time, double fraction)>;
+
+/// How far a residual that falls roughly geometrically has come from `start` to `target`:
+/// ln(start/now) / ln(start/target), in [0, 1] (0 when it has not fallen below start).
+inline double log_progress(double start, double now, double target)
+{
+  if (!(now > target) )
+    return 1.0;
+  if (!(start > target) || !(now < start))
+    return 0.0;
+  return std::log(start / now) / std::log(start / target);
+}
 
 struct GrowthSettings
 {

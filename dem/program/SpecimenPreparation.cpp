@@ -387,14 +387,19 @@ PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCri
   const double time0 = system.time();
   DemEngine engine(std::move(system), DemEngineParameters::from_case(c.dem));
   const double interval = k.check_interval_steps * engine.system().time_step();
+  double first_error = -1.0, fraction = 0.0; // the progress estimate: the stress error's way to its tolerance
   while (true) {
     const HoldResult h = hold_isotropic(engine, s.isotropic_pressure, k.stress_tolerance, k.unbalanced_force_ratio,
                                         50.0 * interval, interval);
     rec.consolidated = h;
     rec.consolidated_rest = rest_state(engine.system());
     const double spent = engine.system().time() - time0;
+    if (first_error < 0.0)
+      first_error = h.stress_error;
+    fraction = std::max(fraction, std::min(log_progress(first_error, h.stress_error, k.stress_tolerance),
+                                           h.converged ? 0.99 : 0.9));
     if (progress)
-      progress("consolidation", spent);
+      progress("consolidation", spent, fraction);
     if (h.converged && rec.consolidated_rest.kinetic_ratio() <= k.kinetic_ratio)
       break;
     if (spent >= k.max_time)
@@ -403,6 +408,8 @@ PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCri
                                " s of DEM time (stress error " + std::to_string(h.stress_error) +
                                ", unbalanced-force ratio " + std::to_string(h.unbalanced) + ")");
   }
+  if (progress)
+    progress("consolidation", engine.system().time() - time0, 1.0);
   rec.consolidation.steps = engine.system().n_steps() - steps0;
   rec.consolidation.time = engine.system().time() - time0;
   rec.consolidation.wall_seconds = seconds_since(t_consolidation);

@@ -165,7 +165,7 @@ TEST(AsGiven, AnOrderedArrayOfTouchingSpheresRestsForNoTime)
   c.dem = dem_parameters();
   std::vector<std::string> phases;
   const PreparedSpecimen s =
-    prepare_specimen(c, {}, [&](const std::string &phase, double) { phases.push_back(phase); });
+    prepare_specimen(c, {}, [&](const std::string &phase, double, double) { phases.push_back(phase); });
   EXPECT_EQ(s.record.frictionless.steps, 0u);
   EXPECT_EQ(s.record.frictional.steps, 0u);
   EXPECT_NE(std::find(phases.begin(), phases.end(), "rest (frictionless): nothing touches, ended at once"),
