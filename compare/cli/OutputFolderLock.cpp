@@ -55,10 +55,16 @@ OutputFolderLock::OutputFolderLock(const fs::path &dir, const std::string &file_
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw CaseError(file_named_in, parameter, name + " exists and is not a folder: expected a folder (or a path that does not exist yet)");
   if (!fs::exists(dir, ec)) {
+    for (fs::path p = fs::absolute(dir, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+      created_.push_back(p);
+      if (p == p.parent_path())
+        break;
+    }
     fs::create_directories(dir, ec);
-    if (ec)
+    if (ec) {
+      remove_created();
       throw CaseError(file_named_in, parameter, name + " cannot be created (" + ec.message() + "): expected a folder that can be written");
-    created_dir_ = true;
+    }
   }
   const fs::path file = file_in(dir);
   // Open, lock, then check that the file locked is still the one at the path: a run that
@@ -68,8 +74,7 @@ OutputFolderLock::OutputFolderLock(const fs::path &dir, const std::string &file_
     const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd < 0) {
       const std::string why = std::strerror(errno);
-      if (created_dir_)
-        fs::remove(dir, ec);
+      remove_created();
       throw CaseError(file_named_in, parameter, name + " cannot be written (" + why + "): expected a folder this user can write");
     }
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
@@ -88,8 +93,10 @@ OutputFolderLock::OutputFolderLock(const fs::path &dir, const std::string &file_
     }
     ::close(fd);
   }
-  if (fd_ < 0)
+  if (fd_ < 0) {
+    remove_created();
     throw CaseError(file_named_in, parameter, name + ": its lock file " + file.string() + " keeps changing: expected one run at a time");
+  }
   const std::string stale = holder_of(fd_);
   if (!stale.empty()) {
     warning_ = "warning: output folder " + name + ": took over the lock left by " + stale +
@@ -106,8 +113,15 @@ OutputFolderLock::~OutputFolderLock()
   std::error_code ec;
   fs::remove(file_in(dir_), ec); // while still locked: a waiting run then finds no file or a new one
   ::close(fd_);
-  if (created_dir_ && fs::is_empty(dir_, ec))
-    fs::remove(dir_, ec);
+  remove_created();
+}
+
+void OutputFolderLock::remove_created() const
+{
+  std::error_code ec;
+  for (const fs::path &p : created_)
+    if (fs::is_directory(p, ec) && fs::is_empty(p, ec))
+      fs::remove(p, ec);
 }
 
 std::unique_ptr<OutputFolderLock> lock_for_run(const fs::path &dir, const std::string &file,

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace geocomp::cli {
 
@@ -41,8 +42,11 @@ public:
 private:
   std::filesystem::path dir_;
   int fd_ = -1;
-  bool created_dir_ = false;
+  std::vector<std::filesystem::path> created_; ///< folders this lock made, innermost first
   std::string warning_;
+
+  /// Removes the folders this lock made, those left empty.
+  void remove_created() const;
 };
 
 /// The lock of `dir` for a run on `comm` (MPI started): taken by rank 0, the other ranks

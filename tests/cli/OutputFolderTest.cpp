@@ -96,6 +96,17 @@ TEST(OutputFolder, AStaleLockOfAProcessThatIsGoneIsTakenOverWithAWarning)
   EXPECT_FALSE(fs::exists(out / ".geocomp.lock")) << "removed when the run ends";
 }
 
+TEST(OutputFolder, FoldersARunMadeAndLeftEmptyAreRemovedWithTheLock)
+{
+  const Scratch s("output-empty");
+  const fs::path c = write_case(s.dir, "unused");
+  // report finds no results to report (a run failure): the folders it made go again.
+  const auto r = run_program({GEOCOMP_EXE, "report", c.string(), "--output", (s.dir / "a/b/c").string()}, s.dir);
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("no results"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(s.dir / "a")) << "a/b/c left behind";
+}
+
 TEST(OutputFolder, AnOutputPathThatIsAFileOrCannotBeCreatedIsBadInputExitTwo)
 {
   const Scratch s("output-path");
