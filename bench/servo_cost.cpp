@@ -46,7 +46,8 @@ DemSystem tiny_system(const bench::BenchParameters &b)
   bench::set_bench_law(sys, b);
   const double R = b.radius, h = 2.0 * R * 0.99;
   for (int k = 0; k < 8; ++k)
-    sys.add_sphere(Vec3(0.99 * R + h * (k & 1), 0.99 * R + h * ((k >> 1) & 1), 0.99 * R + h * ((k >> 2) & 1)), R, b.rho);
+    sys.add_sphere(Vec3(0.99 * R + h * (k & 1), 0.99 * R + h * ((k >> 1) & 1), 0.99 * R + h * ((k >> 2) & 1)), R,
+                   b.rho);
   sys.add_box(Vec3::Zero(), Vec3::Constant(h + 1.98 * R), 0.0);
   sys.set_time_step(0.2 * sys.critical_time_step());
   sys.set_num_threads(1);
@@ -125,7 +126,8 @@ int main(int argc, char **argv)
     t_servo = std::min(t_servo, engine_step(tiny, servo, steps));
   }
   const double bookkeeping = t_kinematic - t_system, servos = t_servo - t_kinematic;
-  std::printf("8 spheres, %ld steps, fastest of %d: system %.1f ns/step, engine (kinematic) %.1f, engine (2 servos) %.1f\n",
+  std::printf("8 spheres, %ld steps, fastest of %d: system %.1f ns/step, engine (kinematic) %.1f, "
+              "engine (2 servos) %.1f\n",
               steps, rounds, 1e9 * t_system, 1e9 * t_kinematic, 1e9 * t_servo);
   std::printf("per step: engine bookkeeping with the interval means and guards %.1f ns, two servos %.1f ns\n",
               1e9 * bookkeeping, 1e9 * servos);

@@ -128,7 +128,8 @@ std::string never_holds(const Condition &c, const Stage &stage, bool first)
     axis = 1;
   else if (c.quantity == Quantity::EpsZZ)
     axis = 2;
-  if (c.quantity == Quantity::VolumetricStrain && stage.isochoric && ((c.at_least && v > 0.0) || (!c.at_least && v < 0.0)))
+  const bool away_from_zero = (c.at_least && v > 0.0) || (!c.at_least && v < 0.0);
+  if (c.quantity == Quantity::VolumetricStrain && stage.isochoric && away_from_zero)
     return "the isochoric program keeps the volume (eps_vol = 0)";
   if (axis < 0 || !stage.kinematic(axis))
     return "";

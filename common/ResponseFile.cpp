@@ -76,9 +76,9 @@ void write_response(const std::filesystem::path &path, const Response &r, RunMet
               {n, 3, 3}, "Pa");
     {
       h5::Handle set(H5Dopen2(g.id(), "stress_mean", H5P_DEFAULT), H5Dclose);
-      h5::write_attribute(set.id(), "description",
-                          std::string(r.interval_means ? "mean of the stress over the sampling interval ending at the sample"
-                                                       : "the instantaneous stress (the engine gives no interval mean)"));
+      const char *what = r.interval_means ? "mean of the stress over the sampling interval ending at the sample"
+                                          : "the instantaneous stress (the engine gives no interval mean)";
+      h5::write_attribute(set.id(), "description", std::string(what));
     }
     h5::write(g.id(), "volumetric_strain",
               scalars(r, [](const ResponseSample &s) { return volumetric_strain(s.strain); }), {n}, "1");
@@ -163,7 +163,8 @@ Response read_response(const std::filesystem::path &path, RunMeta *meta)
         meta->kinematics = h5::read_string_attribute(m.id(), "kinematics");
       const auto text = h5::read_strings(m.id(), "case_text");
       meta->case_text = text.empty() ? "" : text.front();
-      const auto status = h5::exists(m.id(), "status") ? h5::read_strings(m.id(), "status") : std::vector<std::string>{};
+      const auto status =
+        h5::exists(m.id(), "status") ? h5::read_strings(m.id(), "status") : std::vector<std::string>{};
       meta->status = status.empty() ? "complete" : status.front();
     }
   }

@@ -37,7 +37,10 @@ std::string bar(double fraction, int width = 30)
 }
 
 /// Seconds left when `fraction` of a task took `elapsed` seconds (-1: unknown yet).
-double eta_of(double elapsed, double fraction) { return fraction > 1e-3 ? elapsed * (1.0 - fraction) / fraction : -1.0; }
+double eta_of(double elapsed, double fraction)
+{
+  return fraction > 1e-3 ? elapsed * (1.0 - fraction) / fraction : -1.0;
+}
 
 double seconds_between(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
 {

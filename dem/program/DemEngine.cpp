@@ -254,13 +254,15 @@ std::vector<ExtraColumn> DemEngine::extra_columns() const
           {"fabric_anisotropy", "1", "sqrt(3/2 dev(Phi):dev(Phi))"},
           {"porosity", "1", "1 - solid volume / box volume"},
           {"kinetic_energy", "J", "translational + rotational"},
-          {"inertial_number", "1", "gamma_dot d_mean sqrt(rho / p), gamma_dot = max - min wall strain rate"},
+          {"inertial_number", "1",
+           "gamma_dot d_mean sqrt(rho / p), gamma_dot = max - min of the axes' mean strain rates over the interval"},
           {"unbalanced_force_ratio", "1", "mean |net particle force| / mean |contact force|"},
           {"steps", "1", "DEM steps since the start of the run"},
           {"servo_deviation", "1", "largest |sigma_aa - goal|/|goal| of a stress-controlled axis at any step of the "
                                    "sampling interval (0 without one)"},
-          {"servo_reversals", "1", "steps of the sampling interval at which a servo wall's speed changed sign "
-                                   "(summed over the stress-controlled axes; an oscillating servo reverses every step)"},
+          {"servo_reversals", "1",
+           "steps of the sampling interval at which a servo wall's speed changed sign (summed over the "
+           "stress-controlled axes; an oscillating servo reverses every step)"},
           {"wall_rate_xx", "1/s", "engineering strain rate of the x walls at the sample's last step"},
           {"wall_rate_yy", "1/s", "the same for y"},
           {"wall_rate_zz", "1/s", "the same for z"}};
@@ -441,6 +443,7 @@ void DemEngine::accumulate(const StageControl &c, double dt)
     throw GuardError(o.str());
   }
   s_.stress_sum += dt * sigma;
+  s_.rate_sum += dt * s_.rate;
   s_.window_time += dt;
   if (c.stage->isochoric)
     return;
@@ -550,7 +553,9 @@ ResponseSample DemEngine::measure()
     anisotropy = std::sqrt(1.5 * (d.array() * d.array()).sum());
   }
   const double pressure = -mean_stress(s.stress);
-  const double gamma_rate = s_.rate.maxCoeff() - s_.rate.minCoeff();
+  // The interval's mean strain rates (a servo wall's speed at one step carries its noise).
+  const Vector3 rate = s_.window_time > 0.0 ? Vector3(s_.rate_sum / s_.window_time) : s_.rate;
+  const double gamma_rate = rate.maxCoeff() - rate.minCoeff();
   const double inertial = gamma_rate == 0.0 ? 0.0
                           : pressure > 0.0   ? gamma_rate * s_.mean_diameter * std::sqrt(s_.density / pressure) // GDR MiDi
                                              : std::numeric_limits<double>::quiet_NaN();
@@ -581,6 +586,7 @@ ResponseSample DemEngine::measure()
   for (int a = 0; a < 3; ++a)
     s.extras[kWallRateXX + a] = s_.rate[a];
   s_.stress_sum = Tensor3::Zero(); // the next interval starts here
+  s_.rate_sum = Vector3::Zero();
   s_.window_time = 0.0;
   s_.max_servo_deviation = 0.0;
   s_.servo_reversals = 0;
@@ -700,6 +706,7 @@ void DemEngine::write_state(std::ostream &out, const State &s, const DemSystem &
   for (const AxisServo &servo : s.servo)
     binary::put(out, servo.integral_velocity());
   binary::put(out, s.stress_sum);
+  binary::put(out, s.rate_sum);
   binary::put(out, s.window_time);
   binary::put(out, s.max_servo_deviation);
   binary::put(out, s.servo_reversals);
@@ -731,6 +738,7 @@ void DemEngine::read_state(std::istream &in, State &s, DemSystem &system)
     servo.set_integral_velocity(v);
   }
   binary::get(in, s.stress_sum);
+  binary::get(in, s.rate_sum);
   binary::get(in, s.window_time);
   binary::get(in, s.max_servo_deviation);
   binary::get(in, s.servo_reversals);

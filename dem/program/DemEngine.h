@@ -27,7 +27,8 @@
 // coordination number $Z = 2C/N$, the mechanical one $Z_m = (2C - N_1)/(N - N_0 - N_1)$ (Thornton
 // 2000), the fabric $\Phi = \frac1C\sum n\otimes n$ and its anisotropy $\sqrt{\tfrac32\,\mathrm{dev}\Phi:\mathrm{dev}\Phi}$,
 // the porosity, the kinetic energy, the inertial number $I = \dot\gamma\,\bar d\sqrt{\rho/p}$ with
-// $\dot\gamma = \max_a\dot\varepsilon_a - \min_a\dot\varepsilon_a$ from the wall speeds, and the
+// $\dot\gamma = \max_a\dot\varepsilon_a - \min_a\dot\varepsilon_a$ from the wall speeds' means over the
+// interval, and the
 // unbalanced-force ratio (mean |net force| / mean |contact force|, Yade).
 //
 // save()/restore() copy the whole DemSystem (contact histories, lists and counters), so a
@@ -58,7 +59,8 @@ namespace geocomp::dem {
 ContactModel make_contact_model(const ContactParameters &c);
 
 /// A DemSystem holding the packing in its box (six walls with mu_p, spheres with the
-/// packing's density and its velocities when it has them), the contact law, mu_s, the skin (DemParameters::skin times the
+/// packing's density and its velocities when it has them), the contact law, mu_s, the skin
+/// (DemParameters::skin times the
 /// mean diameter), the threads, local damping and dt = time_step_safety x critical step.
 DemSystem make_system(const Packing &packing, const ContactParameters &c, const DemParameters &d);
 
@@ -208,6 +210,7 @@ private:
     std::array<AxisServo, 3> servo{};   ///< the stress servo of each axis
     // The sampling interval under way (since the last measure()):
     Tensor3 stress_sum = Tensor3::Zero(); ///< sum of wall stress x dt over its steps
+    Vector3 rate_sum = Vector3::Zero();   ///< sum of the axes' strain rates x dt (inertial number)
     double window_time = 0.0;           ///< [s] their time
     double max_servo_deviation = 0.0;   ///< largest |sigma_aa - goal| / |goal| of a stress axis at a step
     std::uint64_t servo_reversals = 0;  ///< steps at which a servo wall's speed changed sign

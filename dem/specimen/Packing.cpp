@@ -118,7 +118,8 @@ void read_velocity_line(const std::filesystem::path &file, int n, const std::str
   s >> w[0] >> w[1] >> w[2];
   const auto it = index.find(id);
   if (it == index.end())
-    throw PackingFileError(file.string(), n, "velocity of atom " + std::to_string(id) + ", which the Atoms section does not list");
+    throw PackingFileError(file.string(), n,
+                           "velocity of atom " + std::to_string(id) + ", which the Atoms section does not list");
   if (!v.allFinite() || !w.allFinite())
     throw PackingFileError(file.string(), n, "expected finite numbers");
   if (p.velocity.empty()) {

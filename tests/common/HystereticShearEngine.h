@@ -2,10 +2,13 @@
 // A closed-form engine for testing the program logic: shear stress follows the backbone
 // tau_b(g) = A (g/g0) exp(1 - g/g0) (peak A at g = g0) on first loading and unloads
 // elastically with slope K from the largest shear strain reached. Mean stress -p0.
-// Every number a test checks can be computed by hand from these formulas.
+// Every number a test checks can be computed by hand from these formulas. shear_program()
+// is the isochoric shear the tests play on it.
 #include "common/LoadingEngine.h"
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace geocomp::testing {
 
@@ -74,5 +77,25 @@ private:
   double time_ = 0.0, g_hist_ = 0.0;
   Vector3 eps_ = Vector3::Zero();
 };
+
+/// lambda = 0 isochoric shear at 0.05/s, sampled every 0.01 s, to gamma_max = `stop_gamma`
+/// (gamma_max = eps_z - eps_x grows at about 2 * rate), with unloading branches at `triggers`.
+inline LoadingProgram shear_program(std::vector<std::string> triggers, double stop_gamma = 0.2,
+                                    double max_duration = 100.0)
+{
+  LoadingProgram p;
+  p.sample_interval = 0.01;
+  Stage s;
+  s.name = "shear";
+  s.isochoric = true;
+  s.lambda = 0.0;
+  s.isochoric_rate = 0.05;
+  s.stop_any = {parse_condition("gamma_max >= " + std::to_string(stop_gamma), "test")};
+  s.max_duration = max_duration;
+  for (const auto &t : triggers)
+    s.unload_at.push_back(parse_trigger(t, "test"));
+  p.stages.push_back(s);
+  return p;
+}
 
 } // namespace geocomp::testing

@@ -7,26 +7,7 @@
 
 using namespace geocomp;
 using geocomp::testing::HystereticShearEngine;
-
-namespace {
-// lambda = 0 isochoric shear: gamma_max = eps_z - eps_x grows at about 2 * rate.
-LoadingProgram shear_program(std::vector<std::string> triggers, double stop_gamma = 0.2)
-{
-  LoadingProgram p;
-  p.sample_interval = 0.01;
-  Stage s;
-  s.name = "shear";
-  s.isochoric = true;
-  s.lambda = 0.0;
-  s.isochoric_rate = 0.05;
-  s.stop_any = {parse_condition("gamma_max >= " + std::to_string(stop_gamma), "test")};
-  s.max_duration = 100;
-  for (const auto &t : triggers)
-    s.unload_at.push_back(parse_trigger(t, "test"));
-  p.stages.push_back(s);
-  return p;
-}
-} // namespace
+using geocomp::testing::shear_program;
 
 // A kinematic stage ends at the first sample where its condition holds, not later.
 TEST(ProgramRunner, StageEndsAtFirstSampleWhereConditionHolds)

@@ -19,19 +19,10 @@ using geocomp::testing::HystereticShearEngine;
 namespace fs = std::filesystem;
 
 namespace {
-/// lambda = 0 isochoric shear at 0.05/s, sampled every 0.01 s, to gamma_max = `stop`.
+/// The shear program to gamma_max = `stop`, without branches.
 LoadingProgram shear_program(double stop, double max_duration = 100.0)
 {
-  LoadingProgram p;
-  p.sample_interval = 0.01;
-  Stage s;
-  s.name = "shear";
-  s.isochoric = true;
-  s.isochoric_rate = 0.05;
-  s.stop_any = {parse_condition("gamma_max >= " + std::to_string(stop), "test")};
-  s.max_duration = max_duration;
-  p.stages = {s};
-  return p;
+  return geocomp::testing::shear_program({}, stop, max_duration);
 }
 
 /// The closed-form engine, failing in advance_to once its time passes `fail_after`.

@@ -83,11 +83,7 @@ FileStress stress_of(const Packing &p, double k_n)
 LoadingProgram short_triaxial()
 {
   LoadingProgram p;
-  Stage s;
-  s.axes = {{AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure), AxisDrive::rate(-0.5)}};
-  s.stop_any = {parse_condition("eps_zz <= -0.001", "test")};
-  s.max_duration = 0.01;
-  p.stages = {s};
+  p.stages = {triaxial_stage(kPressure, 0.5, 0.001)};
   p.sample_interval = 0.001;
   return p;
 }
@@ -183,7 +179,8 @@ TEST(AsGiven, EntriesTheSourceDoesNotUseAreNamed)
   c.specimen.isotropic_pressure = 1e5;
   const std::vector<std::string> unused = ignored_specimen_entries(c);
   ASSERT_EQ(unused.size(), 3u);
-  EXPECT_EQ(unused[0], c.file + ": specimen/particles = 5000 is not used: the packing file gives the spheres and the box");
+  EXPECT_EQ(unused[0],
+            c.file + ": specimen/particles = 5000 is not used: the packing file gives the spheres and the box");
   EXPECT_NE(unused[1].find("specimen/radius = 0.01 is not used"), std::string::npos);
   EXPECT_NE(unused[2].find("specimen/isotropic pressure = 100000 is not used: the packing is taken as given"),
             std::string::npos);

@@ -3,6 +3,8 @@
 // ratio of k_n; c_t in N s/m, as a ratio of c_n, or by default c_n k_t/k_n (S0 eq. (2)).
 // gamma_n standing for a restitution gives that restitution's collision; a constant given
 // two ways is refused naming the entry.
+#include "ContactCase.h"
+
 #include "common/case/CaseParameters.h"
 #include "dem/program/DemEngine.h"
 
@@ -15,13 +17,7 @@ using namespace geocomp;
 using namespace geocomp::dem;
 
 namespace {
-CaseDescription case_with(const std::string &contact)
-{
-  return parse_case("set engines = dem\nsubsection contact\n  set normal stiffness = 1e5\n" + contact +
-                      "end\nsubsection program\n  subsection stage 1\n    set z = rate -1\n"
-                      "    set stop when = eps_zz <= -0.01\n    set max duration = 1\n  end\nend\n",
-                    "entries.prm");
-}
+CaseDescription case_with(const std::string &contact) { return test::contact_case(contact, "entries.prm"); }
 
 const LinearSpringDashpot &linear(const ContactModel &m) { return std::get<LinearSpringDashpot>(m); }
 
@@ -95,10 +91,11 @@ TEST(ContactEntries, TangentialStiffnessAndDampingReachTheLawEachWayTheyAreGiven
   EXPECT_TRUE(t.damping_is_ratio);
   EXPECT_EQ(t.c_t, 0.5);
   // c_t as a ratio (0: no tangential dashpot; 1: LIGGGHTS' gamma_t = gamma_n) or in N s/m.
-  EXPECT_EQ(linear(make_contact_model(case_with("  set tangential damping ratio = 0\n").contact)).tangential().parameters().c_t,
-            0.0);
-  EXPECT_EQ(linear(make_contact_model(case_with("  set tangential damping ratio = 1\n").contact)).tangential().parameters().c_t,
-            1.0);
+  const auto c_t_of = [](const std::string &entry) {
+    return linear(make_contact_model(case_with(entry).contact)).tangential().parameters().c_t;
+  };
+  EXPECT_EQ(c_t_of("  set tangential damping ratio = 0\n"), 0.0);
+  EXPECT_EQ(c_t_of("  set tangential damping ratio = 1\n"), 1.0);
   const LinearTangential::Parameters c =
     linear(make_contact_model(case_with("  set tangential damping = 3\n").contact)).tangential().parameters();
   EXPECT_FALSE(c.damping_is_ratio);
@@ -112,10 +109,12 @@ TEST(ContactEntries, TangentialStiffnessAndDampingReachTheLawEachWayTheyAreGiven
 
 TEST(ContactEntries, AConstantGivenTwoWaysIsRefusedNamingTheEntry)
 {
-  EXPECT_EQ(refusal("  set normal damping = 2\n  set normal damping per mass = 100\n"), "contact/normal damping per mass");
+  EXPECT_EQ(refusal("  set normal damping = 2\n  set normal damping per mass = 100\n"),
+            "contact/normal damping per mass");
   EXPECT_EQ(refusal("  set tangential stiffness = 5e4\n  set tangential stiffness ratio = 1\n"),
             "contact/tangential stiffness");
-  EXPECT_EQ(refusal("  set tangential damping = 3\n  set tangential damping ratio = 1\n"), "contact/tangential damping");
+  EXPECT_EQ(refusal("  set tangential damping = 3\n  set tangential damping ratio = 1\n"),
+            "contact/tangential damping");
   EXPECT_EQ(refusal("  set model = hertz-mindlin\n  set tangential damping ratio = 1\n"),
             "contact/tangential damping ratio");
   EXPECT_EQ(refusal("  set normal damping per mass = 100\n"), "");

@@ -1,5 +1,7 @@
 // Case-file entries of the optional contact parts reach the DEM law: rolling resistance
 // (S2), S3 bonds, adhesion and stick-slip friction; a case without them gets the base law.
+#include "ContactCase.h"
+
 #include "common/case/CaseParameters.h"
 #include "dem/program/DemEngine.h"
 
@@ -11,13 +13,7 @@ using namespace geocomp;
 using namespace geocomp::dem;
 
 namespace {
-CaseDescription case_with(const std::string &contact)
-{
-  return parse_case("set engines = dem\nsubsection contact\n  set normal stiffness = 1e5\n" + contact +
-                      "end\nsubsection program\n  subsection stage 1\n    set z = rate -1\n"
-                      "    set stop when = eps_zz <= -0.01\n    set max duration = 1\n  end\nend\n",
-                    "parts.prm");
-}
+CaseDescription case_with(const std::string &contact) { return test::contact_case(contact, "parts.prm"); }
 } // namespace
 
 TEST(ContactPartsCase, NoPartsGivesTheBaseLaw)

@@ -21,12 +21,7 @@ namespace {
 LoadingProgram triaxial()
 {
   LoadingProgram p;
-  Stage s;
-  s.name = "triaxial";
-  s.axes = {{AxisDrive::stress(-kPressure), AxisDrive::stress(-kPressure), AxisDrive::rate(-0.5)}};
-  s.stop_any = {parse_condition("eps_zz <= -0.01", "test")};
-  s.max_duration = 0.1;
-  p.stages = {s};
+  p.stages = {triaxial_stage(kPressure, 0.5, 0.01)};
   p.sample_interval = 0.001;
   return p;
 }

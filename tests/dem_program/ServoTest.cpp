@@ -25,17 +25,9 @@ using namespace geocomp::dem;
 using namespace geocomp::dem::test;
 
 namespace {
-std::string source_dir() { return std::getenv("GEOCOMP_SOURCE_DIR") ? std::getenv("GEOCOMP_SOURCE_DIR") : GEOCOMP_SOURCE_DIR; }
-
-/// Lateral stress -pressure on x and y, z shortened at `rate` to eps_zz = -strain.
-Stage triaxial_stage(double pressure, double rate, double strain)
+std::string source_dir()
 {
-  Stage s;
-  s.name = "triaxial";
-  s.axes = {{AxisDrive::stress(-pressure), AxisDrive::stress(-pressure), AxisDrive::rate(-rate)}};
-  s.stop_any = {parse_condition("eps_zz <= " + std::to_string(-strain), "test")};
-  s.max_duration = 2.0 * strain / rate;
-  return s;
+  return std::getenv("GEOCOMP_SOURCE_DIR") ? std::getenv("GEOCOMP_SOURCE_DIR") : GEOCOMP_SOURCE_DIR;
 }
 
 /// The targets, with the report printed for the log.

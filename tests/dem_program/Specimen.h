@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 namespace geocomp::dem::test {
 
@@ -81,6 +82,18 @@ inline Consolidated consolidate(int n_per_edge, std::uint64_t seed, double compa
                 r.seconds);
     return r;
   }
+}
+
+/// Lateral stress -pressure on x and y, z shortened at `rate` to eps_zz = -strain (max
+/// duration twice the time that takes).
+inline Stage triaxial_stage(double pressure, double rate, double strain)
+{
+  Stage s;
+  s.name = "triaxial";
+  s.axes = {{AxisDrive::stress(-pressure), AxisDrive::stress(-pressure), AxisDrive::rate(-rate)}};
+  s.stop_any = {parse_condition("eps_zz <= " + std::to_string(-strain), "test")};
+  s.max_duration = 2.0 * strain / rate;
+  return s;
 }
 
 inline const Consolidated &consolidated()
