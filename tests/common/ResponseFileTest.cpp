@@ -13,16 +13,8 @@ namespace fs = std::filesystem;
 namespace {
 Response sample_response()
 {
-  LoadingProgram p;
+  LoadingProgram p = geocomp::testing::shear_program({"peak"}, 0.1);
   p.sample_interval = 0.02;
-  Stage s;
-  s.name = "shear";
-  s.isochoric = true;
-  s.isochoric_rate = 0.05;
-  s.stop_any = {parse_condition("gamma_max >= 0.1", "t")};
-  s.max_duration = 100;
-  s.unload_at = {parse_trigger("peak", "t")};
-  p.stages = {s};
   geocomp::testing::HystereticShearEngine engine;
   return ProgramRunner(p, engine).run();
 }
