@@ -84,6 +84,8 @@ void check_parameters(const CubeParameters &p)
     fail("linear tolerance", "must be in (0, 1)");
   if (!(p.newton_tolerance > 0.0 && p.newton_tolerance < 1.0))
     fail("newton tolerance", "must be in (0, 1)");
+  if (!(p.newton_stagnation_tolerance >= 0.0 && p.newton_stagnation_tolerance < 1.0))
+    fail("newton stagnation tolerance", "must be in [0, 1)");
   if (p.max_newton_iterations < 1 || p.steps_per_advance < 1)
     fail("max newton iterations / steps per advance", "must be >= 1");
   if (!(p.imperfection_radius >= 0.0))
@@ -629,7 +631,7 @@ bool CubeEngine::Impl::solve_step(double t)
   solution = solution_owned;
 
   unsigned iterations = 1;
-  double r = assemble(t, false, false);
+  double r = assemble(t, false, false), previous = std::numeric_limits<double>::infinity();
   while (true) {
     const double rel = r / residual_scale;
     stats.last_step_residuals.push_back(rel);
@@ -638,6 +640,15 @@ bool CubeEngine::Impl::solve_step(double t)
       return false;
     if (rel <= prm.newton_tolerance)
       break;
+    // Stagnation at a kink: where points cross a breakpoint of a piecewise-linear c, phi or
+    // psi table the return is not differentiable and Newton can only creep; a residual
+    // below newton_stagnation_tolerance that an iteration no longer halves is accepted.
+    if (rel <= prm.newton_stagnation_tolerance && rel > 0.5 * previous) {
+      ++interval_relaxed;
+      ++stats.relaxed_steps;
+      break;
+    }
+    previous = rel;
     if (iterations >= prm.max_newton_iterations)
       return false;
     ++iterations;
@@ -749,6 +760,22 @@ void CubeEngine::Impl::update_localization(double t)
 
 // @sect3{Measurement}
 
+/// Calls visit(a) with `fv` reinitialized on every locally owned face x_a = L (boundary id 2a+1).
+template <class Visit>
+void CubeEngine::Impl::for_each_moving_face(FEFaceValues<3> &fv, Visit visit) const
+{
+  for (const auto &cell : dof_handler.active_cell_iterators()) {
+    if (!cell->is_locally_owned() || !cell->at_boundary())
+      continue;
+    for (const unsigned f : cell->face_indices()) {
+      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() % 2 == 0)
+        continue;
+      fv.reinit(cell, f);
+      visit(cell->face(f)->boundary_id() / 2);
+    }
+  }
+}
+
 // Wall stress = reaction force / wall area: the current area of the face projected on the
 // wall at finite strain (the Cauchy stress a DEM wall measures), the initial area L^2 at
 // small strain (force over initial area, the work conjugate of the engineering strain).
@@ -773,21 +800,14 @@ Vector3 CubeEngine::Impl::face_areas() const
   const FEValuesExtractors::Vector displacement(0);
   std::vector<Tensor<2, 3>> grad(face_quadrature.size());
   Vector3 area = Vector3::Zero();
-  for (const auto &cell : dof_handler.active_cell_iterators()) {
-    if (!cell->is_locally_owned() || !cell->at_boundary())
-      continue;
-    for (const unsigned f : cell->face_indices()) {
-      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() % 2 == 0)
-        continue;
-      const unsigned a = cell->face(f)->boundary_id() / 2, b = (a + 1) % 3, e = (a + 2) % 3;
-      fe_face_values.reinit(cell, f);
-      fe_face_values[displacement].get_function_gradients(solution, grad);
-      for (unsigned q = 0; q < face_quadrature.size(); ++q) {
-        const double Fbb = 1.0 + grad[q][b][b], Fee = 1.0 + grad[q][e][e];
-        area[a] += (Fbb * Fee - grad[q][b][e] * grad[q][e][b]) * fe_face_values.JxW(q);
-      }
+  for_each_moving_face(fe_face_values, [&](unsigned a) {
+    const unsigned b = (a + 1) % 3, e = (a + 2) % 3;
+    fe_face_values[displacement].get_function_gradients(solution, grad);
+    for (unsigned q = 0; q < face_quadrature.size(); ++q) {
+      const double Fbb = 1.0 + grad[q][b][b], Fee = 1.0 + grad[q][e][e];
+      area[a] += (Fbb * Fee - grad[q][b][e] * grad[q][e][b]) * fe_face_values.JxW(q);
     }
-  }
+  });
   for (unsigned a = 0; a < 3; ++a)
     area[a] = Utilities::MPI::sum(area[a], comm);
   return area;
@@ -799,19 +819,11 @@ Vector3 CubeEngine::Impl::face_strains() const
   const FEValuesExtractors::Vector displacement(0);
   std::vector<Tensor<1, 3>> u(face_quadrature.size());
   Vector3 integral = Vector3::Zero();
-  for (const auto &cell : dof_handler.active_cell_iterators()) {
-    if (!cell->is_locally_owned() || !cell->at_boundary())
-      continue;
-    for (const unsigned f : cell->face_indices()) {
-      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() % 2 == 0)
-        continue;
-      const unsigned a = cell->face(f)->boundary_id() / 2;
-      fe_face_values.reinit(cell, f);
-      fe_face_values[displacement].get_function_values(solution, u);
-      for (unsigned q = 0; q < face_quadrature.size(); ++q)
-        integral[a] += u[q][a] * fe_face_values.JxW(q);
-    }
-  }
+  for_each_moving_face(fe_face_values, [&](unsigned a) {
+    fe_face_values[displacement].get_function_values(solution, u);
+    for (unsigned q = 0; q < face_quadrature.size(); ++q)
+      integral[a] += u[q][a] * fe_face_values.JxW(q);
+  });
   for (unsigned a = 0; a < 3; ++a)
     integral[a] = Utilities::MPI::sum(integral[a], comm);
   const double L = prm.side;
@@ -859,6 +871,7 @@ std::vector<ExtraColumn> CubeEngine::extra_columns() const
   return {{"newton_iterations", "1", "mean Newton iterations (linear solves) per load step in the last interval"},
           {"load_steps", "1", "converged load steps in the last interval"},
           {"cutbacks", "1", "load-step cut-backs in the last interval"},
+          {"relaxed_steps", "1", "load steps accepted at the stagnation tolerance (a table kink) in the last interval"},
           {"plastic_fraction", "1", "volume fraction of plastic quadrature points"},
           {"kappa_max", "1", "largest equivalent plastic strain"},
           {"localization_q", "1", "min over points of min_n det(n.C_ep.n)/det(n.C_e.n) (<= 0 localized)"},
@@ -904,7 +917,7 @@ void CubeEngine::advance_to(double t_end)
   Timer timer;
   if (m.ramp_t1 < 0.0)
     m.ramp_t1 = t_end;
-  m.interval_steps = m.interval_iterations = m.interval_cutbacks = 0;
+  m.interval_steps = m.interval_iterations = m.interval_cutbacks = m.interval_relaxed = 0;
   const double dt_nominal = (t_end - m.time) / m.prm.steps_per_advance;
   double dt = dt_nominal;
   unsigned level = 0; // current number of halvings below the nominal step
@@ -982,6 +995,7 @@ ResponseSample CubeEngine::measure()
   s.extras = {m.interval_steps ? double(m.interval_iterations) / m.interval_steps : 0.0,
               double(m.interval_steps),
               double(m.interval_cutbacks),
+              double(m.interval_relaxed),
               plastic_volume / std::pow(m.prm.side, 3),
               kappa_max,
               m.q_min,

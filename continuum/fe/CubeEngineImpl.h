@@ -13,6 +13,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/generic_linear_algebra.h>
 
@@ -99,6 +100,8 @@ struct CubeEngine::Impl {
   // ---- measurement
   Vector3 wall_stresses() const;       ///< from the internal-force reactions, per current area
   Vector3 face_areas() const;          ///< current areas of the faces x_a = L projected on e_a
+  template <class Visit>
+  void for_each_moving_face(dl::FEFaceValues<3> &fv, Visit visit) const;
   Vector3 face_strains() const;        ///< mean normal displacement / L
   Tensor3 volume_average_stress() const;
 
@@ -130,7 +133,7 @@ struct CubeEngine::Impl {
   std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
 #endif
   bool preconditioner_stale = true;                ///< rebuild before the next solve
-  unsigned preconditioner_reference_iterations = 0; ///< Krylov its of the first solve after a build
+  double preconditioner_iterations_per_decade = 0.0; ///< of the first solve after a build
   std::vector<std::vector<bool>> constant_modes; ///< components of the dofs, for ML
   /// The six rigid-body modes over the locally owned dofs (row map order), column-major,
   /// n_owned x 6: translations x, y, z, then rotations about x, y, z through the centre.
@@ -166,7 +169,7 @@ struct CubeEngine::Impl {
 
   // Statistics.
   CubeStatistics stats;
-  unsigned interval_steps = 0, interval_iterations = 0, interval_cutbacks = 0;
+  unsigned interval_steps = 0, interval_iterations = 0, interval_cutbacks = 0, interval_relaxed = 0;
 
   // Output bookkeeping.
   unsigned measure_count = 0, output_count = 0;

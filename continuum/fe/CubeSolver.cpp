@@ -4,6 +4,9 @@
 
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/solver_control.h>
+
+#include <algorithm>
+#include <cmath>
 #if defined(GEOCOMP_CUBE_USE_PETSC)
 #include <deal.II/lac/petsc_precondition.h>
 #include <deal.II/lac/petsc_solver.h>
@@ -38,15 +41,16 @@ using namespace dealii;
 // V-cycle cost more, the Krylov iterations drop by 1/4 to 1/3 (docs/continuum-fe.md).
 //
 // Reuse (Trilinos). The tangent changes at every Newton iteration, but a hierarchy built
-// from an earlier tangent still preconditions the new one well: ML's fine-level smoother
-// reads the matrix it was built on, which is the same object refilled in place, and only
-// the coarse levels are stale. The hierarchy is therefore kept across Newton iterations and
-// load steps while it serves: it is rebuilt when a solve needs more than
-// `amg_rebuild_growth` times (plus 5) the Krylov iterations of the first solve after the
-// last build, when a solve with a kept hierarchy does not converge (then that solve is
-// repeated with a fresh one), and when the wall constraints change (a new control, a
-// restore). amg_rebuild_growth = 0 rebuilds for every solve. PETSc's BoomerAMG is rebuilt
-// for every solve.
+// from an earlier tangent still preconditions the new one well while the state changes
+// little: ML's fine-level smoother reads the matrix it was built on, which is the same
+// object refilled in place, and only the coarse levels are stale. The hierarchy is
+// therefore kept across Newton iterations and load steps while it serves. A solve with a
+// kept hierarchy may take `amg_rebuild_growth` times the Krylov iterations per decade of
+// reduction that the first solve after the last build took (plus 5); when it does not
+// converge within that allowance (or breaks down) the hierarchy is rebuilt on the current
+// matrix and the solve repeated. It is also rebuilt when the wall constraints change (a new
+// control, a restore). amg_rebuild_growth = 0 rebuilds for every solve. PETSc's BoomerAMG
+// is rebuilt for every solve.
 unsigned CubeEngine::Impl::solve_linear(double reduction)
 {
   Timer timer;
@@ -87,6 +91,13 @@ unsigned CubeEngine::Impl::solve_linear(double reduction)
                          prm.preconditioner == "jacobi"; // a diagonal costs nothing to refresh
     if (rebuild)
       build_preconditioner();
+    // A kept hierarchy gets the iterations its first solve needed per decade of reduction,
+    // times the growth allowance: past that it no longer serves.
+    const double decades = std::max(1.0, -std::log10(reduction));
+    if (!rebuild && preconditioner_iterations_per_decade > 0.0)
+      control_.set_max_steps(std::min<unsigned>(
+        prm.max_linear_iterations,
+        static_cast<unsigned>(std::ceil(prm.amg_rebuild_growth * preconditioner_iterations_per_decade * decades)) + 5));
     auto krylov = [&] {
       if (prm.linear_solver == "cg") {
         TrilinosWrappers::SolverCG solver(control_);
@@ -96,20 +107,21 @@ unsigned CubeEngine::Impl::solve_linear(double reduction)
         solver.solve(matrix, update, rhs, *preconditioner);
       }
     };
+    bool fresh = rebuild;
     try {
       krylov();
-    } catch (const SolverControl::NoConvergence &) {
-      if (rebuild)
+    } catch (const std::exception &) { // no convergence within the allowance, or a breakdown
+      if (fresh)
         throw;
       stats.linear_iterations += control_.last_step(); // the failed attempt counts
       update = 0.0;
+      control_.set_max_steps(prm.max_linear_iterations);
       build_preconditioner();
+      fresh = true;
       krylov();
     }
-    if (rebuild || preconditioner_reference_iterations == 0)
-      preconditioner_reference_iterations = std::max(1u, control_.last_step());
-    else if (control_.last_step() > prm.amg_rebuild_growth * preconditioner_reference_iterations + 5)
-      preconditioner_stale = true;
+    if (fresh)
+      preconditioner_iterations_per_decade = std::max(1.0, control_.last_step() / decades);
   }
 #endif
   stats.solve_seconds += timer.wall_time();
@@ -146,7 +158,7 @@ void CubeEngine::Impl::build_preconditioner()
     preconditioner = std::move(jacobi);
   }
   preconditioner_stale = false;
-  preconditioner_reference_iterations = 0;
+  preconditioner_iterations_per_decade = 0.0;
   ++stats.preconditioner_builds;
 }
 #else

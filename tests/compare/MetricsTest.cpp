@@ -18,6 +18,18 @@ using geocomp::compare::testing::shear_response;
 namespace {
 constexpr double deg = 180.0 / 3.14159265358979323846;
 
+/// A perfectly plastic Mohr-Coulomb material point material (nu 0.25; phi, psi in degrees).
+continuum::MaterialParameters perfect_point(double E, double c, double phi_deg, double psi_deg)
+{
+  continuum::MaterialParameters m;
+  m.mohr_coulomb.youngs_modulus = E;
+  m.mohr_coulomb.poisson_ratio = 0.25;
+  m.mohr_coulomb.cohesion = continuum::PiecewiseLinear(c);
+  m.mohr_coulomb.friction_angle = continuum::PiecewiseLinear(phi_deg / deg);
+  m.mohr_coulomb.dilatancy_angle = continuum::PiecewiseLinear(psi_deg / deg);
+  return m;
+}
+
 MetricOptions shear_options()
 {
   MetricOptions o;
@@ -248,12 +260,7 @@ TEST(Metrics, TooShortStageIsRefusedWithItsName)
 TEST(Metrics, AxialAxisAndSenseComeFromTheProgram)
 {
   const double p = 1e6, c = 50e3, phi = 30.0 / deg;
-  continuum::MaterialParameters m;
-  m.mohr_coulomb.youngs_modulus = 1e9;
-  m.mohr_coulomb.poisson_ratio = 0.25;
-  m.mohr_coulomb.cohesion = continuum::PiecewiseLinear(c);
-  m.mohr_coulomb.friction_angle = continuum::PiecewiseLinear(phi);
-  m.mohr_coulomb.dilatancy_angle = continuum::PiecewiseLinear(0.0);
+  const continuum::MaterialParameters m = perfect_point(1e9, c, 30.0, 0.0);
   continuum::MaterialPointParameters mp;
   mp.initial_stress = -p;
   continuum::MaterialPointEngine engine(m, mp);
@@ -296,12 +303,7 @@ TEST(Metrics, AxialAxisAndSenseComeFromTheProgram)
 TEST(Metrics, PerfectMohrCoulombUnderS0IsochoricShearShowsNoSofteningAtFiniteStrain)
 {
   const double p0 = 1e5, c = 10e3, phi = 30.0 / deg;
-  continuum::MaterialParameters m;
-  m.mohr_coulomb.youngs_modulus = 100e6;
-  m.mohr_coulomb.poisson_ratio = 0.25;
-  m.mohr_coulomb.cohesion = continuum::PiecewiseLinear(c);
-  m.mohr_coulomb.friction_angle = continuum::PiecewiseLinear(phi);
-  m.mohr_coulomb.dilatancy_angle = continuum::PiecewiseLinear(0.0);
+  const continuum::MaterialParameters m = perfect_point(100e6, c, 30.0, 0.0);
   LoadingProgram program;
   program.sample_interval = 0.02;
   Stage s;

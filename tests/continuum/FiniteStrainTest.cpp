@@ -19,19 +19,7 @@ namespace {
 
 MohrCoulombParameters mohr_coulomb(double cohesion, bool hardening)
 {
-  MohrCoulombParameters p;
-  p.youngs_modulus = 1.0e9;
-  p.poisson_ratio = 0.3;
-  if (hardening) {
-    p.cohesion = PiecewiseLinear({0.0, 2e-2, 6e-2}, {0.5 * cohesion, cohesion, 0.6 * cohesion});
-    p.friction_angle = PiecewiseLinear({0.0, 2e-2, 6e-2}, {deg(24), deg(36), deg(31)});
-    p.dilatancy_angle = PiecewiseLinear({0.0, 2e-2, 6e-2}, {deg(4), deg(14), deg(8)});
-  } else {
-    p.cohesion = PiecewiseLinear(cohesion);
-    p.friction_angle = PiecewiseLinear(deg(30));
-    p.dilatancy_angle = PiecewiseLinear(deg(10));
-  }
-  return p;
+  return tangent_test_material(cohesion, hardening);
 }
 
 Matrix3 random_matrix(std::mt19937_64 &rng)

@@ -76,4 +76,24 @@ inline Constructed construct(const MohrCoulombReturnMap &map, ReturnRegion regio
   return c;
 }
 
+/// The materials of the tangent tests (E = 1 GPa, nu = 0.3): perfectly plastic (c, 30, 10 deg),
+/// or with every parameter varying with kappa on each segment (c/2 -> c -> 0.6 c, 24 -> 36 ->
+/// 31 deg, 4 -> 14 -> 8 deg at kappa = 0, 0.02, 0.06).
+inline MohrCoulombParameters tangent_test_material(double cohesion, bool hardening)
+{
+  MohrCoulombParameters p;
+  p.youngs_modulus = 1.0e9;
+  p.poisson_ratio = 0.3;
+  if (hardening) {
+    p.cohesion = PiecewiseLinear({0.0, 2e-2, 6e-2}, {0.5 * cohesion, cohesion, 0.6 * cohesion});
+    p.friction_angle = PiecewiseLinear({0.0, 2e-2, 6e-2}, {deg(24), deg(36), deg(31)});
+    p.dilatancy_angle = PiecewiseLinear({0.0, 2e-2, 6e-2}, {deg(4), deg(14), deg(8)});
+  } else {
+    p.cohesion = PiecewiseLinear(cohesion);
+    p.friction_angle = PiecewiseLinear(deg(30));
+    p.dilatancy_angle = PiecewiseLinear(deg(10));
+  }
+  return p;
+}
+
 } // namespace geocomp::continuum::testing

@@ -12,21 +12,7 @@ using namespace geocomp::continuum::testing;
 
 namespace {
 
-MohrCoulombParameters material(bool hardening) {
-  MohrCoulombParameters p;
-  p.youngs_modulus = 1.0e9;
-  p.poisson_ratio = 0.3;
-  if (hardening) { // every parameter varies with kappa on each segment
-    p.cohesion = PiecewiseLinear({0.0, 2e-2, 6e-2}, {0.5e6, 1.0e6, 0.6e6});
-    p.friction_angle = PiecewiseLinear({0.0, 2e-2, 6e-2}, {deg(24), deg(36), deg(31)});
-    p.dilatancy_angle = PiecewiseLinear({0.0, 2e-2, 6e-2}, {deg(4), deg(14), deg(8)});
-  } else {
-    p.cohesion = PiecewiseLinear(1.0e6);
-    p.friction_angle = PiecewiseLinear(deg(30));
-    p.dilatancy_angle = PiecewiseLinear(deg(10));
-  }
-  return p;
-}
+MohrCoulombParameters material(bool hardening) { return tangent_test_material(1.0e6, hardening); }
 
 // kappa_n and the kappa increment stay inside one table segment, so the map is smooth.
 void check_tangent(bool hardening, double kappa_n) {

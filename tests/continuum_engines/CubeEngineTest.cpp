@@ -84,6 +84,16 @@ std::pair<double, double> elastic_triaxial(Kinematics kinematics, double eps_zz)
   return {std::expm1(ex), (lambda_L * (2.0 * ex + ez) + 2.0 * G * ez) / J};
 }
 
+/// Index of an engine's extra column.
+std::size_t column(const LoadingEngine &engine, const std::string &name)
+{
+  const auto columns = engine.extra_columns();
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    if (columns[k].name == name)
+      return k;
+  throw std::invalid_argument("no extra column " + name);
+}
+
 /// Softening Mohr-Coulomb: c from c0 at kappa = 0.002 down to 0.2 c0 at kappa = 0.02.
 MohrCoulombParameters softening_material()
 {
@@ -255,7 +265,7 @@ TEST(CubeEngine, NewtonConvergesQuadraticallyOnPlasticSteps)
   ProgramRunner runner(program, engine);
   runner.on_progress([&](const RunProgress &progress) {
     const CubeStatistics &st = engine.statistics();
-    if (progress.stage != 1 || progress.sample->extras[3] == 0.0) // plastic_fraction
+    if (progress.stage != 1 || progress.sample->extras[column(engine, "plastic_fraction")] == 0.0)
       return;
     ++plastic_steps;
     worst = std::max(worst, st.last_step_iterations);
@@ -310,7 +320,7 @@ TEST(CubeEngine, BBarKeepsHomogeneousStatesAndNewtonsQuadraticRate)
     double worst_order = 10.0;
     unsigned pairs = 0, worst = 0;
     runner.on_progress([&](const RunProgress &progress) {
-      if (progress.stage != 1 || progress.sample->extras[3] == 0.0)
+      if (progress.stage != 1 || progress.sample->extras[column(engine, "plastic_fraction")] == 0.0)
         return;
       const CubeStatistics &st = engine.statistics();
       worst = std::max(worst, st.last_step_iterations);
