@@ -84,8 +84,8 @@ void check_parameters(const CubeParameters &p)
     fail("linear tolerance", "must be in (0, 1)");
   if (!(p.newton_tolerance > 0.0 && p.newton_tolerance < 1.0))
     fail("newton tolerance", "must be in (0, 1)");
-  if (!(p.newton_stagnation_tolerance >= 0.0 && p.newton_stagnation_tolerance < 1.0))
-    fail("newton stagnation tolerance", "must be in [0, 1)");
+  if (!(p.newton_stagnation_factor >= 0.0 && p.newton_stagnation_factor * p.newton_tolerance < 1.0))
+    fail("newton stagnation factor", "must be >= 0, with factor * newton tolerance < 1");
   if (p.max_newton_iterations < 1 || p.steps_per_advance < 1)
     fail("max newton iterations / steps per advance", "must be >= 1");
   if (!(p.imperfection_radius >= 0.0))
@@ -642,8 +642,9 @@ bool CubeEngine::Impl::solve_step(double t)
       break;
     // Stagnation at a kink: where points cross a breakpoint of a piecewise-linear c, phi or
     // psi table the return is not differentiable and Newton can only creep; a residual
-    // below newton_stagnation_tolerance that an iteration no longer halves is accepted.
-    if (rel <= prm.newton_stagnation_tolerance && rel > 0.5 * previous) {
+    // below newton_stagnation_factor * newton_tolerance that an iteration no longer halves
+    // is accepted.
+    if (rel <= prm.newton_stagnation_factor * prm.newton_tolerance && rel > 0.5 * previous) {
       ++interval_relaxed;
       ++stats.relaxed_steps;
       break;

@@ -82,10 +82,10 @@ struct CubeParameters {
   unsigned max_linear_iterations = 5000;
   // Newton and load stepping.
   double newton_tolerance = 1e-9;   ///< |R_free| <= tol * max(|F_int|, |F_ext|)
-  /// A step whose |R_free| / F is below this and no longer halves per iteration (Newton
-  /// creeping where points cross a kink of a piecewise-linear table) is accepted and
-  /// counted (extra `relaxed_steps`); 0 = never.
-  double newton_stagnation_tolerance = 1e-6;
+  /// A step whose |R_free| / F is below this times newton_tolerance and no longer halves per
+  /// iteration (Newton creeping where points cross a kink of a piecewise-linear table) is
+  /// accepted and counted (extra `relaxed_steps`); 0 = never.
+  double newton_stagnation_factor = 1e3;
   unsigned max_newton_iterations = 15;
   unsigned line_search_steps = 6;   ///< halvings of the Newton step (0 = full steps)
   unsigned steps_per_advance = 2;   ///< load steps per sample interval (initial size)
@@ -118,7 +118,7 @@ struct CubeStatistics {
   unsigned steps = 0;             ///< converged load steps, total
   unsigned newton_iterations = 0; ///< Newton iterations in converged steps, total
   unsigned cutbacks = 0;          ///< total
-  unsigned relaxed_steps = 0;     ///< steps accepted at newton_stagnation_tolerance, total
+  unsigned relaxed_steps = 0;     ///< steps accepted at the stagnation tolerance, total
   unsigned linear_iterations = 0; ///< total Krylov iterations
   unsigned preconditioner_builds = 0; ///< AMG (or Jacobi) set-ups, total
   double assembly_seconds = 0.0, solve_seconds = 0.0, total_seconds = 0.0;
