@@ -17,15 +17,18 @@ case "$n$rounds" in *[!0-9]*) echo "usage: $0 [N] [ROUNDS] [key=value ...]: N an
 build=${GEOCOMP_BUILD_DIR:-build}
 cmake --build "$build" --target cube_benchmark >/dev/null
 exe=$build/continuum/fe/cube_benchmark
-printf '| kinematics | round | steps | Newton its/step | GMRES its/solve | AMG builds | assembly s | solve s | total s |\n|---|---|---|---|---|---|---|---|---|\n'
+printf '| kinematics | round | steps | Newton its/step | GMRES its/solve | AMG builds | assembly s | solve s | total s | status |\n|---|---|---|---|---|---|---|---|---|---|\n'
 for round in $(seq 1 "$rounds"); do
   for k in small finite; do
-    out=$(OMP_NUM_THREADS=1 "$exe" n="$n" program=isochoric strain=0.15 samples=15 kinematics="$k" "$@")
+    # A run that stops mid-way (exit 1) still prints its statistics and '# FAILED: why'.
+    out=$(OMP_NUM_THREADS=1 "$exe" n="$n" program=isochoric strain=0.15 samples=15 kinematics="$k" "$@") || true
+    status=$(sed -n 's/^# FAILED: .*Newton did not converge at \(t = [0-9.]*\).*/failed at \1/p; s/^# FAILED: \(.*\)/failed: \1/p' <<<"$out" | head -1)
     steps=$(sed -n 's/^# steps \([0-9]*\) newton \([0-9]*\) (\([0-9.]*\)\/step).*(\([0-9.]*\)\/solve) preconditioner builds \([0-9]*\)$/\1 \3 \4 \5/p' <<<"$out")
     secs=$(sed -n 's/^# seconds: setup [0-9.]* assembly \([0-9.]*\) solve \([0-9.]*\) advance [0-9.]* total \([0-9.]*\)/\1 \2 \3/p' <<<"$out")
     [ -n "$steps" ] && [ -n "$secs" ] || { echo "cube_benchmark kinematics=$k printed no statistics:" >&2; echo "$out" | tail -5 >&2; exit 1; }
     read -r s its lin builds <<<"$steps"
     read -r asm sol tot <<<"$secs"
-    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$k" "$round" "$s" "$its" "$lin" "$builds" "$asm" "$sol" "$tot"
+    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$k" "$round" "$s" "$its" "$lin" "$builds" "$asm" "$sol" "$tot" \
+      "${status:-complete}"
   done
 done

@@ -650,7 +650,11 @@ bool CubeEngine::Impl::solve_step(double t)
       break;
     }
     previous = rel;
-    if (iterations >= prm.max_newton_iterations)
+    // A step whose last three iterations have not halved the residual is cut back at once:
+    // it stalls at a floor (loading/unloading switches near a bifurcation) that the
+    // remaining iterations do not lower, and a smaller step is the cheaper remedy.
+    const auto &h = stats.last_step_residuals;
+    if (iterations >= prm.max_newton_iterations || (h.size() >= 4 && rel > 0.5 * h[h.size() - 4]))
       return false;
     ++iterations;
     assemble(t, true, false);
@@ -922,6 +926,7 @@ void CubeEngine::advance_to(double t_end)
   const double dt_nominal = (t_end - m.time) / m.prm.steps_per_advance;
   double dt = dt_nominal;
   unsigned level = 0; // current number of halvings below the nominal step
+  unsigned easy = 0;  // consecutive converged steps within half the Newton limit
   while (m.time < t_end) {
     const bool last = is_last_step(m.time, dt, t_end, dt_nominal);
     const double t = last ? t_end : m.time + dt;
@@ -930,13 +935,21 @@ void CubeEngine::advance_to(double t_end)
       m.time = t;
       ++m.interval_steps;
       ++m.stats.steps;
-      if (level > 0 && m.stats.last_step_iterations <= 4) {
+      // After a cut-back the step doubles again after a step that converged in at most
+      // four iterations, or after two in a row within half the Newton limit (a step near a
+      // kink may need five or six iterations at any size; growing only on <= 4 left such
+      // runs at the smallest step to the end).
+      const unsigned its = m.stats.last_step_iterations;
+      easy = 2 * its <= m.prm.max_newton_iterations ? easy + 1 : 0;
+      if (level > 0 && (its <= 4 || easy >= 2)) {
         dt *= 2.0;
         --level;
+        easy = 0;
       }
       continue;
     }
     m.revert();
+    easy = 0;
     ++m.interval_cutbacks;
     ++m.stats.cutbacks;
     if (++level > m.prm.max_cutbacks) {

@@ -101,7 +101,16 @@ int main(int argc, char **argv)
   CubeEngine engine(cp, material, MPI_COMM_WORLD);
   const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ProgramRunner runner(program, engine);
-  const Response r = runner.run();
+  // A run that stops mid-way (Newton beyond its cut-backs) still prints what it computed,
+  // its statistics and why it stopped, and exits 1.
+  Response r;
+  std::string failure;
+  try {
+    r = runner.run();
+  } catch (const ProgramFailed &e) {
+    r = e.partial;
+    failure = e.what();
+  }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const CubeStatistics &st = engine.statistics();
   if (root) {
@@ -124,5 +133,8 @@ int main(int argc, char **argv)
                 st.linear_iterations, double(st.linear_iterations) / st.newton_iterations, st.preconditioner_builds);
     std::printf("# seconds: setup %.2f assembly %.2f solve %.2f advance %.2f total %.2f\n", setup,
                 st.assembly_seconds, st.solve_seconds, st.total_seconds, total);
+    if (!failure.empty())
+      std::printf("# FAILED: %s\n", failure.c_str());
   }
+  return failure.empty() ? 0 : 1;
 }
