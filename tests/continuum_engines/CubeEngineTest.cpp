@@ -139,8 +139,9 @@ TEST(CubeEngine, ElasticTriaxialMatchesClosedFormOnQ1AndQ2)
       }
       EXPECT_GE(checked, 7);
       // Small strain is linear: every load step converges in the predictor solve.
-      if (kinematics == Kinematics::small_strain)
+      if (kinematics == Kinematics::small_strain) {
         EXPECT_EQ(engine.statistics().newton_iterations, engine.statistics().steps);
+      }
     }
 }
 
