@@ -21,8 +21,8 @@
 // displacements as inhomogeneous constraints (a tangent predictor, exact for elasticity),
 // and alpha comes from a backtracking line search on |R|. A step that does not converge in
 // `max_newton_iterations` (or whose last three iterations did not halve the residual) is
-// cut back (halved) from the last converged state; steps grow
-// again after a step of at most four iterations or two in a row within half that limit.
+// cut back (halved) from the last converged state; steps grow again after a step of at
+// most four iterations or two in a row within half that limit.
 // History lives per quadrature point (CellDataStorage): the converged state and the trial
 // state of the current iteration, committed only after convergence, so cut-backs and the
 // engine's save()/restore() are exact.
