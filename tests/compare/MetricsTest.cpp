@@ -134,17 +134,8 @@ TEST(Metrics, ElasticLimitInterpolatesBetweenUnloadingResiduals)
 // within the interpolation bracket of the exact solution of g - tau_b(g)/K = 1 %.
 TEST(Metrics, ElasticLimitFromRunnerBranchesBracketsTheExactOne)
 {
-  LoadingProgram p;
-  p.sample_interval = 0.01;
-  Stage s;
-  s.name = "shear";
-  s.isochoric = true;
-  s.isochoric_rate = 0.05;
-  s.stop_any = {parse_condition("gamma_max >= 0.12", "test")};
-  s.max_duration = 100;
-  for (const char *t : {"gamma_max >= 0.01", "gamma_max >= 0.02", "gamma_max >= 0.03", "gamma_max >= 0.05"})
-    s.unload_at.push_back(parse_trigger(t, "test"));
-  p.stages.push_back(s);
+  const LoadingProgram p = geocomp::testing::shear_program(
+    {"gamma_max >= 0.01", "gamma_max >= 0.02", "gamma_max >= 0.03", "gamma_max >= 0.05"}, 0.12);
   geocomp::testing::HystereticShearEngine engine;
   const Response r = ProgramRunner(p, engine).run();
   ASSERT_EQ(curve_kind_for(p), CurveKind::ShearIsochoric);
