@@ -93,11 +93,16 @@ unsigned CubeEngine::Impl::solve_linear(double reduction)
       build_preconditioner();
     // A kept hierarchy gets the iterations its first solve needed per decade of reduction,
     // times the growth allowance: past that it no longer serves.
+    // A fresh one gets max_linear_iterations (set on every solve: the allowance of a kept
+    // one must not carry over to the next build).
     const double decades = std::max(1.0, -std::log10(reduction));
-    if (!rebuild && preconditioner_iterations_per_decade > 0.0)
-      control_.set_max_steps(std::min<unsigned>(
-        prm.max_linear_iterations,
-        static_cast<unsigned>(std::ceil(prm.amg_rebuild_growth * preconditioner_iterations_per_decade * decades)) + 5));
+    const bool kept = !rebuild && preconditioner_iterations_per_decade > 0.0;
+    control_.set_max_steps(
+      kept ? std::min<unsigned>(prm.max_linear_iterations,
+                                static_cast<unsigned>(std::ceil(prm.amg_rebuild_growth *
+                                                                preconditioner_iterations_per_decade * decades)) +
+                                  5)
+           : prm.max_linear_iterations);
     auto krylov = [&] {
       if (prm.linear_solver == "cg") {
         TrilinosWrappers::SolverCG solver(control_);
