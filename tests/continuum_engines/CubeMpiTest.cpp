@@ -86,6 +86,7 @@ TEST(CubeEngineMpi, IsochoricShearKeepsTheMeanStressAndThePlateauOnOneAndTwoRank
     return;
   CubeEngine parallel(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
   const Response r = ProgramRunner(program, parallel).run();
-  if (rank == 0)
+  if (rank == 0) {
     EXPECT_GT(expect_isochoric_plateau(r, p, c, phi, 1e-8), 50) << "np = 2";
+  }
 }
