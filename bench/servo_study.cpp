@@ -9,7 +9,7 @@
 // the worst interval mean, instantaneous and per-step deviation from the goal after the first
 // 0.5 % of axial strain, and the servo walls' speed reversals. Bad arguments exit 2.
 #include "common/ProgramRunner.h"
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "dem/program/DemEngine.h"
 #include "dem/program/ServoReport.h"
 #include "dem/program/SpecimenPreparation.h"

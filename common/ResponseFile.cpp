@@ -61,6 +61,10 @@ void write_response(const std::filesystem::path &path, const Response &r, RunMet
         h5::write_attribute(m.id(), "kinematics", meta.kinematics);
       h5::write(m.id(), "case_text", std::vector<std::string>{meta.case_text});
       h5::write(m.id(), "status", std::vector<std::string>{meta.status});
+      if (!meta.parameters.empty())
+        h5::write(m.id(), "parameters", std::vector<std::string>{meta.parameters});
+      if (!meta.specimen_record.empty())
+        h5::write(m.id(), "specimen_record", std::vector<std::string>{meta.specimen_record});
     }
     const hsize_t n = r.samples.size();
     h5::Handle g = h5::create_group(file.id(), "response");
@@ -166,6 +170,11 @@ Response read_response(const std::filesystem::path &path, RunMeta *meta)
       const auto status =
         h5::exists(m.id(), "status") ? h5::read_strings(m.id(), "status") : std::vector<std::string>{};
       meta->status = status.empty() ? "complete" : status.front();
+      for (auto [name, field] : {std::pair{"parameters", &RunMeta::parameters},
+                                 std::pair{"specimen_record", &RunMeta::specimen_record}}) {
+        const auto text = h5::exists(m.id(), name) ? h5::read_strings(m.id(), name) : std::vector<std::string>{};
+        meta->*field = text.empty() ? "" : text.front();
+      }
     }
   }
   h5::Handle g = h5::open_group(file.id(), "response");

@@ -22,6 +22,12 @@ struct RunMeta {
   /// /meta/status: "complete", or where and why the run stopped early ("failed at t = ...:
   /// ..."; "stopped at t = ...: ..."); a file without it (older) reads as "complete".
   std::string status = "complete";
+  /// /meta/parameters: every entry of every section of the case as parsed, canonical text
+  /// (compare/case/CaseDescription.h, parameters_text); empty: not written.
+  std::string parameters;
+  /// /meta/specimen_record (DEM): what the prepared specimen depends on, the key of its reuse
+  /// (dem/case/SpecimenRecord.h); empty: not written.
+  std::string specimen_record;
 };
 
 void write_response(const std::filesystem::path &path, const Response &response, RunMeta meta);

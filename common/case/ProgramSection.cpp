@@ -1,5 +1,6 @@
 // The `program` section: the LoadingProgram both engines run.
-#include "common/case/Sections.h"
+#include "common/case/SectionReader.h"
+#include "common/case/CanonicalText.h"
 
 #include <cmath>
 #include <sstream>
@@ -135,6 +136,34 @@ LoadingProgram parse_program(dealii::ParameterHandler &prm, unsigned int stages,
     r.fail(e.where, e.what());
   }
   return p;
+}
+
+std::string program_text(const LoadingProgram &p)
+{
+  CanonicalText t("program");
+  t("sampling interval", p.sample_interval);
+  for (std::size_t i = 0; i < p.stages.size(); ++i) {
+    const Stage &s = p.stages[i];
+    t.section("program/stage " + std::to_string(i + 1));
+    t("name", s.name);
+    t("mode", std::string(s.isochoric ? "isochoric" : "axes"));
+    const char *axes[] = {"x", "y", "z"};
+    for (int a = 0; a < 3; ++a)
+      t(axes[a], std::string(s.axes[a].is_stress() ? "stress " : "rate ") + canonical_number(s.axes[a].value));
+    t("lambda", s.lambda);
+    t("isochoric rate", s.isochoric_rate);
+    std::vector<std::string> stops, triggers;
+    for (const Condition &c : s.stop_any)
+      stops.push_back(c.text);
+    for (const BranchTrigger &b : s.unload_at)
+      triggers.push_back(b.text);
+    t("stop when", stops);
+    t("max duration", s.max_duration);
+    t("unload at", triggers);
+    t("unload to", s.unload_to_start ? std::string("start") : canonical_number(s.unload_to_tau));
+    t("peak tolerance", s.peak_tolerance);
+  }
+  return t.text();
 }
 
 } // namespace geocomp::sections

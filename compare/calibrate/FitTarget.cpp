@@ -3,7 +3,7 @@
 #include "common/ProgramRunner.h"
 #include "common/ResponseFile.h"
 #include "common/Tensor.h"
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "compare/calibrate/FreeParameters.h"
 #include "continuum/driver/MaterialPointEngine.h"
 

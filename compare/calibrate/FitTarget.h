@@ -17,7 +17,7 @@
 #pragma once
 
 #include "common/LoadingProgram.h"
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "common/Response.h"
 #include "continuum/driver/Materials.h"
 

@@ -6,7 +6,7 @@
 // is the map between the two, with the bounds in case-file units (Pa, degrees).
 #pragma once
 
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 
 #include <stdexcept>
 #include <string>

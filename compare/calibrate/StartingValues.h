@@ -22,7 +22,7 @@
 // start and so in the calibrated section.
 #pragma once
 
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "compare/calibrate/FitTarget.h"
 #include "compare/calibrate/FreeParameters.h"
 

@@ -2,7 +2,7 @@
 #include "CaseValidation.h"
 #include "Commands.h"
 
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 
 #include <iostream>
 

@@ -11,7 +11,7 @@
 // engine's checks are one function, validate_engine(); make_engine() calls it first, and
 // `check`, `pair`, `dem`, `continuum`, `material-point`, `calibrate`, `pack` and `sweep`
 // call it for every engine of a case before anything is written.
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 
 #include <string>
 #include <vector>

@@ -7,6 +7,7 @@
 #include "continuum/fe/CubeEngine.h"
 #include "common/AtomicFile.h"
 #include "common/Version.h"
+#include "dem/case/SpecimenRecord.h"
 #include "dem/program/DemEngine.h"
 #include "dem/program/SpecimenPreparation.h"
 
@@ -40,28 +41,6 @@ double box_size(const SpecimenParameters &s)
 } // namespace
 
 namespace {
-/// Everything the prepared specimen depends on, one line per value (the cache key).
-std::string specimen_key(const CaseDescription &c)
-{
-  std::ostringstream o;
-  o.precision(17);
-  const SpecimenParameters &s = c.specimen;
-  const ContactParameters &k = c.contact;
-  const DemParameters &d = c.dem;
-  o << "build " << GEOCOMP_GIT_HASH << "\nseed " << c.seed << "\nsource " << s.source << ' ' << s.store_file << ' '
-    << s.store_name << ' ' << s.text_file << "\nN " << s.particles << "\neta " << s.packing_fraction << "\nR "
-    << s.radius << ' ' << s.size_distribution << ' ' << s.radius_spread << ' ' << s.lognormal_sigma << "\nL0 "
-    << s.box_size << "\nrho " << s.density << "\nsigma0 " << s.isotropic_pressure << "\naristotelian "
-    << s.aristotelian << "\nrelaxation " << s.frictionless_relaxation << "\npreparation " << s.preparation << "\ncontact " << k.model << ' ' << k.youngs_modulus << ' ' << k.poisson_ratio << ' '
-    << k.impact_velocity << ' ' << k.restitution << ' ' << k.normal_stiffness << ' ' << k.normal_damping << ' '
-    << k.tangential_stiffness_ratio << ' ' << k.particle_friction << ' ' << k.wall_friction << ' '
-    << k.normal_damping_per_mass << ' ' << k.tangential_stiffness << ' ' << k.tangential_damping << ' '
-    << k.tangential_damping_ratio << "\ndem "
-    << d.time_step_safety << ' ' << d.threads << ' ' << d.local_damping << ' ' << d.skin << ' '
-    << d.servo_max_velocity << ' ' << d.servo_gain << ' ' << d.servo_integral_gain << "\n";
-  return o.str();
-}
-
 std::string read_text(const fs::path &file)
 {
   std::ifstream in(file);
@@ -70,18 +49,21 @@ std::string read_text(const fs::path &file)
   return s.str();
 }
 
-/// The case's consolidated specimen in its engine: from `<dir>/dem-specimen.bin` when that
-/// was prepared from the same specimen, contact and dem parameters by this build,
-/// otherwise prepared now (dem::prepare_specimen) and cached there.
+/// The case's consolidated specimen in its engine: from `<dir>/dem-specimen.bin` when its
+/// record (`dem-specimen.key`: the build, the seed and every DEM entry the specimen depends
+/// on, dem/case/SpecimenRecord.h) is the case's, otherwise prepared now
+/// (dem::prepare_specimen) and cached there with its record. The contact law is part of the
+/// record, so the cached engine's law is always the case's.
 std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const fs::path &dir)
 {
   dem::DemEngineParameters p = dem::DemEngineParameters::from_case(c.dem);
   p.check_interrupts = false; // SIGINT/SIGTERM stop the program at its next sample (program checkpoint)
   const fs::path cache = dir / "dem-specimen.bin", key_file = dir / "dem-specimen.key";
-  const std::string key = specimen_key(c);
+  const std::string key = dem::specimen_record(c, GEOCOMP_GIT_HASH);
   if (fs::exists(cache) && fs::exists(key_file) && read_text(key_file) == key) {
     try {
       auto e = dem::DemEngine::from_checkpoint(cache, p);
+      e->set_num_threads(int(c.dem.threads)); // not in the record (same bits for any count)
       std::cout << "dem: prepared specimen reused: " << cache.string() << "\n";
       return e;
     } catch (const std::exception &) {

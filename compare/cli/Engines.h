@@ -2,7 +2,7 @@
 // Builds each engine of a case from its CaseDescription: the one place where the case
 // file's plain structs meet the engines' own parameter structs.
 #include "common/LoadingEngine.h"
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "continuum/driver/Materials.h"
 #include "continuum/driver/MaterialPointEngine.h"
 #include "continuum/fe/CubeEngine.h"

@@ -3,7 +3,7 @@
 #include "Commands.h"
 #include "Progress.h"
 
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "dem/program/SpecimenPreparation.h"
 #include "dem/program/SpecimenStore.h"
 

@@ -18,6 +18,7 @@
 #include "compare/Report.h"
 #include "compare/calibrate/FitReport.h"
 #include "continuum/fe/CubeEngine.h"
+#include "dem/case/SpecimenRecord.h"
 #include "dem/program/DemEngine.h"
 #include "dem/program/Fields.h"
 #include "dem/program/SpecimenPreparation.h"
@@ -204,8 +205,9 @@ void add_dem_fields(compare::ReportInput &in, const fs::path &dir, std::vector<c
                                               component, title.str()));
 }
 
-/// Results of `engine` for case `c` in `dir` if they were made from the same case text by
-/// the same build and the run completed; otherwise none.
+/// Results of `engine` for case `c` in `dir` if they were made from the same case text and
+/// the same parameters as parsed (an included file may have changed) by the same build and
+/// the run completed; otherwise none.
 bool up_to_date(const fs::path &file, const CaseDescription &c)
 {
   if (!fs::exists(file))
@@ -213,7 +215,8 @@ bool up_to_date(const fs::path &file, const CaseDescription &c)
   try {
     RunMeta meta;
     read_response(file, &meta);
-    return meta.case_text == c.text && meta.git_hash == GEOCOMP_GIT_HASH && meta.status == "complete";
+    return meta.case_text == c.text && meta.parameters == parameters_text(c) && meta.git_hash == GEOCOMP_GIT_HASH &&
+           meta.status == "complete";
   } catch (const std::exception &) {
     return false;
   }
@@ -308,6 +311,9 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
                                         "current wall area)"
                                       : c.continuum.kinematics;
     meta.status = status;
+    meta.parameters = parameters_text(c);
+    if (engine == "dem")
+      meta.specimen_record = dem::specimen_record(c, GEOCOMP_GIT_HASH);
     write_response(file, r, meta);
     std::cout << engine << ": " << r.samples.size() << " samples, " << r.branches.size()
               << " unloading branches -> " << file.string() << "\n";

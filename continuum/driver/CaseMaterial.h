@@ -5,7 +5,7 @@
 // calibration, which varies the section.
 #pragma once
 
-#include "common/case/CaseParameters.h"
+#include "continuum/case/ContinuumParameters.h"
 #include "continuum/driver/Materials.h"
 
 namespace geocomp::continuum {

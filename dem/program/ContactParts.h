@@ -3,7 +3,7 @@
 // friction) composed onto the base law that `make_contact_model` builds from the
 // `contact` section: one place maps the case entries to the ContactModel alternatives
 // (ContactLaw.h), so that a case with none of them gets exactly the base law.
-#include "common/case/CaseParameters.h"
+#include "dem/case/DemParameters.h"
 #include "dem/ContactLaw.h"
 
 namespace geocomp::dem {

@@ -39,7 +39,7 @@
 #pragma once
 
 #include "common/LoadingEngine.h"
-#include "common/case/CaseParameters.h"
+#include "dem/case/DemParameters.h"
 #include "dem/DemSystem.h"
 #include "dem/program/ServoControl.h"
 #include "dem/specimen/Packing.h"
@@ -178,6 +178,8 @@ public:
   void read_checkpoint(const std::filesystem::path &path);
 
   const DemSystem &system() const { return system_; }
+  /// OpenMP threads of the step (0: the OpenMP default); the results do not depend on it.
+  void set_num_threads(int n) { system_.set_num_threads(n); }
   const DemEngineParameters &parameters() const { return prm_; }
   /// Program time: DEM time less the time at construction.
   double time() const { return system_.time() - s_.t_origin; }

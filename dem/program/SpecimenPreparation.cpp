@@ -53,7 +53,7 @@ ContactParameters frictionless(const ContactParameters &c)
 }
 
 /// The rest criteria of the frictionless phase, with FIRE when the case asks for it.
-RestCriteria frictionless_rest(const CaseDescription &c, const PreparationCriteria &k)
+RestCriteria frictionless_rest(const DemCase &c, const PreparationCriteria &k)
 {
   RestCriteria r = k.packing;
   r.fire = c.specimen.frictionless_relaxation == "fire";
@@ -74,7 +74,7 @@ void set_packing_dynamics(DemSystem &s, bool aristotelian, const PreparationCrit
 
 /// The case's stored specimen, refused (CaseError) when the store, the name or the
 /// conditions it was prepared under do not match the case.
-StoredSpecimen read_case_store(const CaseDescription &c)
+StoredSpecimen read_case_store(const DemCase &c)
 {
   const SpecimenParameters &s = c.specimen;
   StoredSpecimen stored;
@@ -104,7 +104,7 @@ StoredSpecimen read_case_store(const CaseDescription &c)
 }
 
 /// The spheres of `source = text`, refused (CaseError) when the file cannot be read or holds none.
-Packing read_case_packing(const CaseDescription &c)
+Packing read_case_packing(const DemCase &c)
 {
   // A FIFO would block the reader and a device never end: regular files only.
   std::error_code ec;
@@ -122,7 +122,7 @@ Packing read_case_packing(const CaseDescription &c)
   return p;
 }
 
-PreparedSpecimen from_store(const CaseDescription &c)
+PreparedSpecimen from_store(const DemCase &c)
 {
   StoredSpecimen stored = read_case_store(c);
   PreparedSpecimen out{std::move(stored.system), stored.record};
@@ -134,7 +134,7 @@ PreparedSpecimen from_store(const CaseDescription &c)
 /// `preparation = as given` of a text source: the file's spheres, and the velocities a
 /// LAMMPS data file lists, in the file's box with the case's contact law and friction,
 /// exactly as read (no rest, no consolidation).
-PreparedSpecimen as_given(const CaseDescription &c)
+PreparedSpecimen as_given(const DemCase &c)
 {
   const auto start = std::chrono::steady_clock::now();
   Packing p = read_case_packing(c);
@@ -157,7 +157,7 @@ PreparedSpecimen as_given(const CaseDescription &c)
 
 } // namespace
 
-std::vector<std::string> ignored_specimen_entries(const CaseDescription &c)
+std::vector<std::string> ignored_specimen_entries(const DemCase &c)
 {
   const SpecimenParameters &s = c.specimen, d{};
   std::vector<std::string> out;
@@ -196,7 +196,7 @@ std::vector<std::string> ignored_specimen_entries(const CaseDescription &c)
   return out;
 }
 
-void check_specimen(const CaseDescription &c)
+void check_specimen(const DemCase &c)
 {
   const SpecimenParameters &s = c.specimen;
   if (s.source == "store") {
@@ -240,7 +240,7 @@ std::string PreparationRecord::describe() const
   return o.str();
 }
 
-GrowthTarget growth_target(const CaseDescription &c)
+GrowthTarget growth_target(const DemCase &c)
 {
   const SpecimenParameters &s = c.specimen;
   SizeDistribution dist;
@@ -279,7 +279,7 @@ GrowthTarget growth_target(const CaseDescription &c)
   return t;
 }
 
-GrownPacking grow_packing(const CaseDescription &c, const PreparationCriteria &k, const PreparationProgress &progress)
+GrownPacking grow_packing(const DemCase &c, const PreparationCriteria &k, const PreparationProgress &progress)
 {
   const SpecimenParameters &s = c.specimen;
   if (!(k.initial_packing_fraction > 0.0 && k.initial_packing_fraction < s.packing_fraction))
@@ -314,7 +314,7 @@ GrownPacking grow_packing(const CaseDescription &c, const PreparationCriteria &k
   return g;
 }
 
-PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCriteria &k,
+PreparedSpecimen prepare_specimen(const DemCase &c, const PreparationCriteria &k,
                                   const PreparationProgress &progress)
 {
   const SpecimenParameters &s = c.specimen;

@@ -26,7 +26,7 @@
 // The same case and seed give the same specimen bit for bit.
 #pragma once
 
-#include "common/case/CaseParameters.h"
+#include "dem/case/DemParameters.h"
 #include "dem/DemSystem.h"
 #include "dem/program/DemEngine.h"
 #include "dem/program/RadiusGrowth.h"
@@ -99,17 +99,17 @@ using PreparationProgress = PhaseProgress;
 /// missing or was prepared with another friction or pressure. prepare_specimen() calls it
 /// first; the command line calls it for every case that names the DEM engine, `geocomp
 /// check` included, so that what check accepts the DEM accepts.
-void check_specimen(const CaseDescription &c);
+void check_specimen(const DemCase &c);
 
 /// The `specimen` entries the case's source and preparation do not use, each that differs
 /// from its default, as one message ("<file>: specimen/particles = 5000 is not used: the
 /// packing file gives the spheres and the box"): the command line warns about each once.
-std::vector<std::string> ignored_specimen_entries(const CaseDescription &c);
+std::vector<std::string> ignored_specimen_entries(const DemCase &c);
 
 /// The case's consolidated specimen. Throws CaseError (file, parameter, message) for
 /// inputs that cannot make one (check_specimen), std::runtime_error when a phase does not
 /// converge.
-PreparedSpecimen prepare_specimen(const CaseDescription &c, const PreparationCriteria &criteria = {},
+PreparedSpecimen prepare_specimen(const DemCase &c, const PreparationCriteria &criteria = {},
                                   const PreparationProgress &progress = {});
 
 /// Radii by id and the cube edge L0 for `source = generate`: the size distribution's
@@ -120,7 +120,7 @@ struct GrowthTarget
   std::vector<double> radii;
   double box_size = 0.0;
 };
-GrowthTarget growth_target(const CaseDescription &c);
+GrowthTarget growth_target(const DemCase &c);
 
 /// Steps 2-3 alone (placement, growth and frictionless rest), for the preparation and
 /// for measuring the Newtonian and Aristotelian routes against each other.
@@ -131,7 +131,7 @@ struct GrownPacking
   RelaxResult rest;
   double initial_packing_fraction = 0.0;
 };
-GrownPacking grow_packing(const CaseDescription &c, const PreparationCriteria &criteria,
+GrownPacking grow_packing(const DemCase &c, const PreparationCriteria &criteria,
                           const PreparationProgress &progress = {});
 
 /// Nominal packing fraction sum 4/3 pi R^3 / box volume (walls 0..5 of add_box()).

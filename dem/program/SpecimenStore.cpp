@@ -351,7 +351,7 @@ bool valid_specimen_name(const std::string &name)
   return true;
 }
 
-SpecimenMetadata SpecimenMetadata::from_case(const CaseDescription &c, const PreparedSpecimen &s)
+SpecimenMetadata SpecimenMetadata::from_case(const DemCase &c, const PreparedSpecimen &s)
 {
   SpecimenMetadata m;
   m.particles = s.system.n_particles();

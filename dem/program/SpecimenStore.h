@@ -27,7 +27,7 @@
 // histories, but not the same bits: StoredSpecimen::exact says which).
 #pragma once
 
-#include "common/case/CaseParameters.h"
+#include "dem/case/DemParameters.h"
 #include "dem/program/SpecimenPreparation.h"
 
 #include <filesystem>
@@ -61,7 +61,7 @@ struct SpecimenMetadata
   double time_step = 0.0;              ///< [s]
   std::string case_file, case_text, created, version;
 
-  static SpecimenMetadata from_case(const CaseDescription &c, const PreparedSpecimen &s);
+  static SpecimenMetadata from_case(const DemCase &c, const PreparedSpecimen &s);
 };
 
 struct StoredSpecimen

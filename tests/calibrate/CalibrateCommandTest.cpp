@@ -1,7 +1,7 @@
 // `geocomp calibrate` end to end: a material-point target with known parameters, a case
 // whose continuum section is off, the calibrated section written, verified on the deal.II
 // cube, and pulled into another case file with deal.II's `include`.
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 
 #include <gtest/gtest.h>
 

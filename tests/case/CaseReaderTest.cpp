@@ -2,7 +2,7 @@
 // and line bounds, UTF-8, JSON nesting and syntax that .prm cannot carry. Each input is
 // refused with one CaseError naming the file (and the entry or the included file), never
 // a crash, a hang or a read without end.
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "common/case/InputLimits.h"
 #include "tests/common/ScratchFolder.h"
 
@@ -188,7 +188,7 @@ TEST(CaseLimits, AValueLongerThanTheLineLimitIsRefusedNamingItsEntry)
 
 TEST(CaseText, InvalidUtf8IsRefusedWithItsLineAndValidUtf8IsKept)
 {
-  for (const std::string bad : {std::string("\xff"), std::string("\xc0\xaf"), std::string("\xed\xa0\x80"),
+  for (const std::string &bad : {std::string("\xff"), std::string("\xc0\xaf"), std::string("\xed\xa0\x80"),
                                 std::string("\xf4\x90\x80\x80"), std::string("\xe2\x82")}) {
     const CaseError e = refusal_of_text("# case\nset title = a" + bad + "b\n" + program, "utf.prm");
     EXPECT_EQ(e.parameter, "(file)");

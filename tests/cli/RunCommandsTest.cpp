@@ -129,6 +129,23 @@ TEST(PairCommand, DemAndCubeGiveSnapshotsOnsetMapsAndTheSameCurvesAgain)
     << read(s.dir / "out2");
   EXPECT_NE(read(s.dir / "out2").find("prepared specimen reused"), std::string::npos) << read(s.dir / "out2");
   EXPECT_EQ(read_command("h5dump -d /response/stress '" + (out / "dem.h5").string() + "'"), stress1);
+  // Another thread count cannot change the specimen (same bits): reused, same curves.
+  std::ofstream(c, std::ios::app) << "subsection dem\n  set threads = 1\nend\n";
+  ASSERT_EQ(run(exe + "dem '" + c.string() + "' > '" + (s.dir / "out3").string() + "' 2>&1"), 0)
+    << read(s.dir / "out3");
+  EXPECT_NE(read(s.dir / "out3").find("prepared specimen reused"), std::string::npos) << read(s.dir / "out3");
+  EXPECT_EQ(read_command("h5dump -d /response/stress '" + (out / "dem.h5").string() + "'"), stress1);
+  // A contact part the old cache key left out: the specimen is prepared again, and the
+  // results say with which values (/meta/parameters, /meta/specimen_record).
+  std::ofstream(c, std::ios::app) << "subsection contact\n  set rolling friction = 0.1\nend\n";
+  ASSERT_EQ(run(exe + "dem '" + c.string() + "' > '" + (s.dir / "out4").string() + "' 2>&1"), 0)
+    << read(s.dir / "out4");
+  EXPECT_NE(read(s.dir / "out4").find("dem: preparing the specimen"), std::string::npos) << read(s.dir / "out4");
+  for (const char *set : {"parameters", "specimen_record"})
+    EXPECT_NE(read_command("h5dump -d /meta/" + std::string(set) + " '" + (out / "dem.h5").string() + "'")
+                .find("contact/rolling friction = 0.1"),
+              std::string::npos)
+      << set;
 }
 
 TEST(CalibrateCommand, RecoversTheModulusOfAMaterialPointTargetAndRefusesMissingTargets)

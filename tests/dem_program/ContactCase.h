@@ -2,7 +2,7 @@
 // the `contact` entries given, and a one-stage program.
 #pragma once
 
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 
 #include <string>
 

@@ -5,7 +5,7 @@
 // two ways is refused naming the entry.
 #include "ContactCase.h"
 
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "dem/program/DemEngine.h"
 
 #include <gtest/gtest.h>

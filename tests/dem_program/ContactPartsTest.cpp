@@ -2,7 +2,7 @@
 // (S2), S3 bonds, adhesion and stick-slip friction; a case without them gets the base law.
 #include "ContactCase.h"
 
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "dem/program/DemEngine.h"
 
 #include <gtest/gtest.h>
@@ -20,7 +20,6 @@ TEST(ContactPartsCase, NoPartsGivesTheBaseLaw)
 {
   const CaseDescription c = case_with("");
   EXPECT_EQ(c.contact.rolling_friction, 0.0);
-  EXPECT_EQ(c.clumps.shape, "spheres");
   EXPECT_TRUE(std::holds_alternative<LinearSpringDashpot>(make_contact_model(c.contact)));
 }
 
@@ -64,14 +63,17 @@ TEST(ContactPartsCase, BondsOnHertzMindlinAreRefusedNamingTheParameter)
   }
 }
 
-TEST(ContactPartsCase, ClumpSectionIsRead)
+TEST(ContactPartsCase, AClumpSectionIsRefusedForNoEngineOfTheMainCaseReadsIt)
 {
-  const CaseDescription c = parse_case(
-    "set engines = dem\nsubsection clumps\n  set shape = s4-clumps\n  set log mass sigma = 0.5\nend\n"
-    "subsection program\n  subsection stage 1\n    set z = rate -1\n    set stop when = eps_zz <= -0.01\n"
-    "    set max duration = 1\n  end\nend\n",
-    "clumps.prm");
-  EXPECT_EQ(c.clumps.shape, "s4-clumps");
-  EXPECT_EQ(c.clumps.log_mass_sigma, 0.5);
-  EXPECT_EQ(c.clumps.log_mass_mean, -0.117);
+  // Clumped grains are the shear-box case's (`grains`); the wall-box engine packs spheres, so
+  // a `clumps` section would be silently ignored: refused instead, naming the entry.
+  try {
+    parse_case("set engines = dem\nsubsection clumps\n  set shape = s4-clumps\nend\n"
+               "subsection program\n  subsection stage 1\n    set z = rate -1\n    set stop when = eps_zz <= -0.01\n"
+               "    set max duration = 1\n  end\nend\n",
+               "clumps.prm");
+    FAIL() << "expected a CaseError";
+  } catch (const CaseError &e) {
+    EXPECT_NE(std::string(e.what()).find("clumps"), std::string::npos) << e.what();
+  }
 }

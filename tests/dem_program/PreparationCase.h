@@ -4,7 +4,7 @@
 
 #include "Specimen.h"
 
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 
 namespace geocomp::dem::test {
 

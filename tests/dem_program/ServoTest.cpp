@@ -10,6 +10,7 @@
 #include "Specimen.h"
 
 #include "common/ProgramRunner.h"
+#include "compare/case/CaseDescription.h"
 #include "dem/program/LatticePacking.h"
 #include "dem/program/ServoReport.h"
 #include "dem/program/SpecimenPreparation.h"

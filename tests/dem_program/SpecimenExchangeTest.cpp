@@ -2,7 +2,7 @@
 // LAMMPS/LIGGGHTS data file reads back exactly (17 digits), in the box of its walls, and
 // an exported packing made into a specimen again (`source = text`) consolidates to the
 // same sigma_0 and nearly the same packing fraction: a specimen leaves and returns.
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "dem/program/SpecimenExchange.h"
 #include "dem/program/SpecimenPreparation.h"
 #include "dem/program/SpecimenStore.h"

@@ -3,7 +3,7 @@
 // with a CaseError; a crash, a stack overflow, a sanitizer report, a hang or any other
 // exception is a bug. `include` lines are followed as in a case (relative to the working
 // directory here): the reader's limits and checks apply to what they name.
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 
 #include <cstddef>
 #include <cstdint>

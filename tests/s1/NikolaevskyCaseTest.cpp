@@ -9,7 +9,7 @@
 //   flow (S1 eq. (2))  tr(d eps^p) = 2 Lambda sqrt(I2(d e^p)),  I2 = e:e/2,  d kappa = 2 sqrt(I2)
 //   uniaxial hardening |sigma_zz| = sigma_y + (sigma_c - sigma_y) |eps^p_zz| / eps_p*.
 #include "common/ProgramRunner.h"
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
 #include "continuum/driver/CaseMaterial.h"
 #include "continuum/driver/MaterialPointEngine.h"
 

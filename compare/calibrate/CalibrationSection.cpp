@@ -1,6 +1,6 @@
 // The `calibration` section: which curves `geocomp calibrate` fits, which continuum
 // parameters are free, their bounds and weights (docs/calibration.md).
-#include "common/case/Sections.h"
+#include "compare/calibrate/CalibrationSection.h"
 
 #include <deal.II/base/utilities.h>
 

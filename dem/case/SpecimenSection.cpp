@@ -1,5 +1,5 @@
-// The `specimen` and `output` sections.
-#include "common/case/Sections.h"
+// The `specimen` section: where the DEM specimen comes from and how it is prepared.
+#include "dem/case/DemSections.h"
 
 namespace geocomp::sections {
 
@@ -83,29 +83,6 @@ SpecimenParameters parse_specimen(dealii::ParameterHandler &prm, const Reader &r
     r.fail("specimen/text file", "source = text needs a packing file");
   if (p.size_distribution == "uniform" && p.radius_spread <= 0.0)
     r.fail("specimen/radius spread", "a uniform size distribution needs a spread > 0");
-  return p;
-}
-
-void declare_output(dealii::ParameterHandler &prm)
-{
-  prm.enter_subsection("output");
-  prm.declare_entry("directory", "results", Anything(),
-                    "Folder for results (HDF5 per engine, fields, report); relative to the working directory.");
-  prm.declare_entry("report", "true", Bool(), "Write the comparison report (HTML + plots + metrics.json).");
-  prm.declare_entry("fields", "true", Bool(), "Write field output (VTU for the continuum, HDF5+XDMF for DEM).");
-  prm.leave_subsection();
-}
-
-OutputParameters parse_output(dealii::ParameterHandler &prm, const Reader &r)
-{
-  OutputParameters p;
-  prm.enter_subsection("output");
-  p.directory = prm.get("directory");
-  p.report = prm.get_bool("report");
-  p.fields = prm.get_bool("fields");
-  prm.leave_subsection();
-  if (p.directory.empty())
-    r.fail("output/directory", "expected a folder name");
   return p;
 }
 

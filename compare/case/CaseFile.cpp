@@ -1,11 +1,15 @@
 // Reading a case file: declare every section, parse with deal.II's ParameterHandler,
 // convert to plain structs, validate, and turn every failure into one CaseError that
 // names the file, the parameter and what was expected.
-#include "common/case/CaseParameters.h"
+#include "compare/case/CaseDescription.h"
+#include "common/case/CanonicalText.h"
 #include "common/case/JsonCase.h"
 #include "common/case/ParseParameters.h"
-#include "common/case/Sections.h"
 #include "common/case/TextEncoding.h"
+#include "compare/calibrate/CalibrationSection.h"
+#include "continuum/case/ContinuumSections.h"
+#include "dem/case/DemSections.h"
+#include "dem/case/SpecimenRecord.h"
 
 #include <deal.II/base/exceptions.h>
 
@@ -19,23 +23,10 @@ namespace geocomp {
 namespace {
 using namespace dealii;
 
-void declare_top(ParameterHandler &prm)
-{
-  prm.declare_entry("title", "", Patterns::Anything(), "A title for reports.");
-  prm.declare_entry("engines", "dem, continuum", Patterns::MultipleSelection("dem|continuum|material-point"),
-                    "Engines that run the program: 'dem', 'continuum' (deal.II cube), 'material-point' "
-                    "(the continuum model at one point).");
-  prm.declare_entry("seed", "1", Patterns::Integer(0), "Random seed: the same seed gives the same specimen and curves.");
-}
-
 void declare_all(ParameterHandler &prm, unsigned int stages)
 {
-  declare_top(prm);
-  sections::declare_specimen(prm);
-  sections::declare_contact(prm);
-  sections::declare_contact_parts(prm);
-  sections::declare_clumps(prm);
-  sections::declare_dem(prm);
+  sections::declare_head(prm);
+  sections::declare_dem_sections(prm);
   sections::declare_continuum(prm);
   sections::declare_program(prm, stages);
   sections::declare_output(prm);
@@ -97,11 +88,7 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
     c.seed = static_cast<unsigned long long>(prm.get_integer("seed"));
     if (c.engines.empty())
       reader.fail("engines", "expected at least one of dem, continuum, material-point");
-    c.specimen = sections::parse_specimen(prm, reader);
-    c.contact = sections::parse_contact(prm, reader);
-    sections::parse_contact_parts(prm, reader, c.contact);
-    c.clumps = sections::parse_clumps(prm, reader);
-    c.dem = sections::parse_dem(prm, reader);
+    sections::parse_dem_sections(prm, reader, c);
     c.continuum = sections::parse_continuum(prm, reader);
     c.program = sections::parse_program(prm, stages, reader);
     c.output = sections::parse_output(prm, reader);
@@ -150,6 +137,22 @@ std::string describe_parameters()
       << "# each with the entries shown for stage 1.\n\n";
   print_tree(tree, out, 0);
   return out.str();
+}
+
+std::string parameters_text(const CaseDescription &c)
+{
+  CanonicalText head("");
+  CaseHead::visit(c, head);
+  CanonicalText continuum("continuum");
+  continuum::ContinuumParameters::visit(c.continuum, continuum);
+  continuum.section("continuum/nikolaevsky");
+  continuum::NikolaevskyParameters::visit(c.continuum.nikolaevsky, continuum);
+  CanonicalText rest("output");
+  OutputParameters::visit(c.output, rest);
+  rest.section("calibration");
+  CalibrationParameters::visit(c.calibration, rest);
+  return head.text() + dem::dem_parameters_text(c) + continuum.text() + sections::program_text(c.program) +
+         rest.text();
 }
 
 } // namespace geocomp

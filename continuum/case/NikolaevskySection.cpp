@@ -10,7 +10,7 @@
 // checks here are those that need no row: ranges by pattern, and sigma_c > sigma_y below
 // (common/S1StrengthOrder.h, the rule S1Material::validate_plasticity applies too).
 #include "common/S1StrengthOrder.h"
-#include "common/case/Sections.h"
+#include "continuum/case/ContinuumSections.h"
 
 #include <sstream>
 

@@ -1,7 +1,7 @@
 // The optional contact parts of the `contact` section (rolling resistance, S3 bonds and
-// adhesion, S3 friction) and the `clumps` section (S3/S4 rigid grains). Declared here,
-// apart from the base contact entries, so that each part's inputs sit in one place.
-#include "common/case/Sections.h"
+// adhesion, S3 friction). Declared here, apart from the base contact entries, so that each
+// part's inputs sit in one place.
+#include "dem/case/DemSections.h"
 
 namespace geocomp::sections {
 
@@ -58,39 +58,6 @@ void parse_contact_parts(dealii::ParameterHandler &prm, const Reader &r, Contact
     r.fail("contact/tangential model", "'s3-stick-slip' needs the linear normal model");
   if (p.model == "hertz-mindlin" && bonds)
     r.fail("contact/cohesion", "S3 bonds and adhesion need the linear normal model");
-}
-
-void declare_clumps(dealii::ParameterHandler &prm)
-{
-  prm.enter_subsection("clumps");
-  prm.declare_entry("shape", "spheres", Selection("spheres|s4-clumps"),
-                    "'spheres': single spheres; 's4-clumps': rigid clumps from S4's four templates with lognormal "
-                    "mass (mass, centroid and inertia by voxel integration).");
-  prm.declare_entry("log mass mean", "-0.117", Double(-20, 20), "S4: mean mu of ln(m / 1 g).");
-  prm.declare_entry("log mass sigma", "0.432", Double(0, 10), "S4: sigma of ln(m / 1 g).");
-  prm.declare_entry("mass min", "0.4e-3", Double(1e-15, 1e6), "Lightest grain [kg] (S4: 0.4 g); lighter draws are redrawn.");
-  prm.declare_entry("mass max", "2.0e-3", Double(1e-15, 1e6), "Heaviest grain [kg] (S4: 2.0 g).");
-  prm.declare_entry("max overlap", "0.5", Double(0, 0.99),
-                    "Member overlaps drawn in [0, max overlap * D_min] (S4: 0.5).");
-  prm.declare_entry("voxel fraction", "0.05", Double(1e-3, 0.5),
-                    "Voxel cube side / D_min for mass properties (S4: 1/20).");
-  prm.leave_subsection();
-}
-
-ClumpParameters parse_clumps(dealii::ParameterHandler &prm, const Reader &r)
-{
-  ClumpParameters p;
-  prm.enter_subsection("clumps");
-  p.shape = prm.get("shape");
-  p.log_mass_mean = prm.get_double("log mass mean");
-  p.log_mass_sigma = prm.get_double("log mass sigma");
-  p.mass_min = prm.get_double("mass min");
-  p.mass_max = prm.get_double("mass max");
-  p.max_overlap = prm.get_double("max overlap");
-  p.voxel_fraction = prm.get_double("voxel fraction");
-  prm.leave_subsection();
-  if (!(p.mass_min < p.mass_max)) r.fail("clumps/mass max", "expected mass max > mass min");
-  return p;
 }
 
 } // namespace geocomp::sections

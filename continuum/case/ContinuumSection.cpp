@@ -1,0 +1,163 @@
+// The `continuum` section: the continuum engines' material (Mohr-Coulomb tables,
+// Drucker-Prager matching, S1's model in its subsection), mesh and solver.
+#include "continuum/case/ContinuumSections.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace geocomp::sections {
+
+using dealii::Patterns::Anything;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::List;
+using dealii::Patterns::Selection;
+
+
+void declare_continuum(dealii::ParameterHandler &prm)
+{
+  prm.enter_subsection("continuum");
+  prm.declare_entry("model", "mohr-coulomb", Selection("mohr-coulomb|drucker-prager|nikolaevsky"),
+                    "Constitutive model: Mohr-Coulomb with hardening/softening, Drucker-Prager matched to it, or "
+                    "nikolaevsky: S1's quasi-static model (Mises-Schleicher yield, Nikolaevsky non-associated flow, "
+                    "linear hardening; docs/s1-kinetic-model.md), whose material is subsection nikolaevsky: the "
+                    "entries E, nu, cohesion, friction and dilatancy angle below are then not used.");
+  prm.declare_entry("drucker prager matching", "outer", Selection("outer|inner|plane-strain"),
+                    "How Drucker-Prager is matched to the Mohr-Coulomb c and phi.");
+  prm.declare_entry("youngs modulus", "200e6", Double(1e3, 1e13),
+                    "Young's modulus E [Pa] (mohr-coulomb, drucker-prager).");
+  prm.declare_entry("poisson ratio", "0.25", Double(0, 0.4999), "Poisson ratio nu (mohr-coulomb, drucker-prager).");
+  prm.declare_entry("cohesion", "0:1e5", Anything(),
+                    "Cohesion c(kappa) [Pa], piecewise linear: 'kappa:value, kappa:value, ...', kappa from 0 "
+                    "increasing; constant beyond the last point.");
+  prm.declare_entry("friction angle", "0:30", Anything(), "Friction angle phi(kappa) [deg], same format.");
+  prm.declare_entry("dilatancy angle", "0:5", Anything(),
+                    "Dilatancy angle psi(kappa) [deg], same format; psi <= phi (non-associated flow).");
+  prm.declare_entry("kinematics", "finite strain", Selection("finite strain|small strain"),
+                    "finite strain: multiplicative plasticity with logarithmic elastic strain, F from the box edges "
+                    "(material point) or total Lagrangian (FE cube), Cauchy stress as force over current area; "
+                    "small strain: eps = sym grad u, force over initial area (for comparison). Both engines.");
+  prm.declare_entry("cells per edge", "4", Integer(1, 512), "Hexahedra per cube edge.");
+  prm.declare_entry("degree", "1", Integer(1, 4), "Polynomial degree of the FE_Q displacement.");
+  prm.declare_entry("volumetric integration", "full", Selection("full|b-bar"),
+                    "full: every quadrature point takes its own volumetric strain; b-bar: the cell average "
+                    "(Hughes 1980), which removes the volumetric locking of Q1 under nearly isochoric plastic "
+                    "flow (docs/continuum-fe.md). Meant for degree 1.");
+  prm.declare_entry("imperfection radius", "0", Double(0, 1e3),
+                    "Radius [m] of a weaker zone that triggers a band; 0 = none.");
+  prm.declare_entry("imperfection factor", "0.9", Double(0.01, 1.0),
+                    "Cohesion multiplier inside the weaker zone (drucker-prager: of Y(kappa); nikolaevsky: of every "
+                    "strength, sigma_y and sigma_c, hence of Y(kappa)).");
+  prm.declare_entry("imperfection centre", "0.5, 0.5, 0.5", List(Double(0, 1), 3, 3),
+                    "Centre of the weaker zone, as fractions of L0.");
+  prm.declare_entry("linear solver", "gmres", Selection("gmres|cg|direct"),
+                    "PETSc solver of the Newton systems (direct = MUMPS).");
+  prm.declare_entry("preconditioner", "amg", Selection("amg|jacobi"),
+                    "Preconditioner of the Krylov solvers: algebraic multigrid (Trilinos ML, or Hypre "
+                    "BoomerAMG in a PETSc build) or Jacobi.");
+  prm.declare_entry("near null space", "rigid-body", Selection("rigid-body|translations"),
+                    "Near-null space of the algebraic multigrid (Trilinos ML): the six rigid-body modes "
+                    "(Krylov iterations nearly independent of the mesh; a costlier set-up) or the three "
+                    "translations (cheaper per solve on meshes up to ~64^3, iterations grow with the mesh). "
+                    "docs/continuum-fe.md, Performance.");
+  prm.declare_entry("newton tolerance", "1e-9", Double(1e-14, 1e-2),
+                    "Newton converges when |R_free| <= tolerance * max(|F_int|, |F_ext|).");
+  prm.declare_entry("load steps per sample", "2", Integer(1, 10000),
+                    "Initial load steps per sampling interval (halved on non-convergence).");
+  prm.declare_entry("point substeps per sample", "20", Integer(1, 100000),
+                    "Load increments per sampling interval of the material-point engine.");
+  prm.declare_entry("regularization", "none", Selection("crack-band|none"),
+                    "Softening regularization: scale the softening by element size (crack band) or none "
+                    "(nikolaevsky hardens linearly and never softens: nothing to scale). The cube's solution stays "
+                    "diffuse on the meshes tested (docs/continuum-fe.md), where the unregularized curves already "
+                    "agree across meshes.");
+  prm.declare_entry("reference element size", "0", Double(0, 1e3),
+                    "Crack-band reference width [m]: the softening table holds as written for elements of this size "
+                    "and is stretched by width/h_e elsewhere; 0 = the cube edge L0 (the table describes the whole "
+                    "specimen, as a material-point calibration from DEM does).");
+  declare_nikolaevsky(prm);
+  prm.leave_subsection();
+}
+
+HardeningTable parse_table(const std::string &text, const std::string &parameter, const Reader &r)
+{
+  HardeningTable t;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos)
+      r.fail(parameter, "expected 'kappa:value' pairs separated by commas, got '" + item + "'");
+    double k = 0, v = 0;
+    try {
+      std::size_t u1 = 0, u2 = 0;
+      const std::string ks = item.substr(0, colon), vs = item.substr(colon + 1);
+      k = std::stod(ks, &u1);
+      v = std::stod(vs, &u2);
+      if (ks.find_first_not_of(" \t", u1) != std::string::npos || vs.find_first_not_of(" \t", u2) != std::string::npos)
+        throw std::invalid_argument(item);
+    } catch (const std::exception &) {
+      r.fail(parameter, "expected numbers in 'kappa:value', got '" + item + "'");
+    }
+    if (!std::isfinite(k) || !std::isfinite(v))
+      r.fail(parameter, "expected finite numbers, got '" + item + "'");
+    if (!t.points.empty() && !(k > t.points.back().first))
+      r.fail(parameter, "kappa must increase strictly from one point to the next");
+    t.points.emplace_back(k, v);
+  }
+  if (t.points.empty())
+    r.fail(parameter, "expected at least one 'kappa:value' point");
+  if (t.points.front().first != 0.0)
+    r.fail(parameter, "the first point must be at kappa = 0");
+  return t;
+}
+
+ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader &r)
+{
+  ContinuumParameters p;
+  prm.enter_subsection("continuum");
+  p.model = prm.get("model");
+  p.dp_matching = prm.get("drucker prager matching");
+  p.youngs_modulus = prm.get_double("youngs modulus");
+  p.poisson_ratio = prm.get_double("poisson ratio");
+  p.cohesion = parse_table(prm.get("cohesion"), "continuum/cohesion", r);
+  p.friction_angle = parse_table(prm.get("friction angle"), "continuum/friction angle", r);
+  p.dilatancy_angle = parse_table(prm.get("dilatancy angle"), "continuum/dilatancy angle", r);
+  p.cells_per_edge = prm.get_integer("cells per edge");
+  p.degree = prm.get_integer("degree");
+  p.volumetric_integration = prm.get("volumetric integration");
+  p.kinematics = prm.get("kinematics");
+  p.imperfection_radius = prm.get_double("imperfection radius");
+  p.imperfection_factor = prm.get_double("imperfection factor");
+  p.imperfection_centre = dealii::Utilities::string_to_double(
+    dealii::Utilities::split_string_list(prm.get("imperfection centre")));
+  p.regularization = prm.get("regularization");
+  p.linear_solver = prm.get("linear solver");
+  p.preconditioner = prm.get("preconditioner");
+  p.near_null_space = prm.get("near null space");
+  p.newton_tolerance = prm.get_double("newton tolerance");
+  p.load_steps_per_sample = prm.get_integer("load steps per sample");
+  p.point_substeps = prm.get_integer("point substeps per sample");
+  p.reference_element_size = prm.get_double("reference element size");
+  p.nikolaevsky = parse_nikolaevsky(prm, r);
+  prm.leave_subsection();
+  if (p.volumetric_integration == "b-bar" && p.kinematics == "finite strain")
+    r.fail("continuum/volumetric integration", "b-bar is a small-strain method: set kinematics = small strain");
+  for (const auto &[k, c] : p.cohesion.points)
+    if (c < 0)
+      r.fail("continuum/cohesion", "cohesion must be >= 0 Pa");
+  for (const auto &[k, phi] : p.friction_angle.points)
+    if (phi < 0 || phi >= 90)
+      r.fail("continuum/friction angle", "expected angles in [0, 90) degrees");
+  for (const auto &[k, psi] : p.dilatancy_angle.points)
+    if (psi < 0 || psi >= 90)
+      r.fail("continuum/dilatancy angle", "expected angles in [0, 90) degrees");
+  for (const auto &[k, psi] : p.dilatancy_angle.points)
+    if (psi > p.friction_angle(k) + 1e-12)
+      r.fail("continuum/dilatancy angle", "psi must not exceed phi at the same kappa (got psi > phi at kappa = " +
+                                            std::to_string(k) + ")");
+  return p;
+}
+
+} // namespace geocomp::sections
