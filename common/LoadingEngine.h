@@ -35,6 +35,11 @@ public:
   virtual bool gives_interval_means() const { return false; }
   virtual std::unique_ptr<EngineState> save() const = 0;
   virtual void restore(const EngineState &state) = 0;
+  /// The runner is about to play unloading branch `id` (> 0), or is back on the main path
+  /// (0); it says so before it restores the state the branch starts from or returns to.
+  /// Engines that write field output keep each branch in a series of its own, so the main
+  /// series runs forward in time.
+  virtual void set_branch(int id) { (void)id; }
 
   /// Program checkpoints (ProgramCheckpoint.h): engines whose saved states can go through a
   /// byte stream say so and implement the two functions below; the others are not

@@ -288,6 +288,7 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
 {
   const Stage &stage = *main.stage;
   const std::unique_ptr<EngineState> resume = engine_.save();
+  engine_.set_branch(static_cast<int>(response_.branches.size()) + 1);
   if (from_state)
     engine_.restore(*from_state);
   // The sample the branch leaves from: the main-path sample at the saved state.
@@ -393,6 +394,7 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
   b.residual_gamma = gamma_max(response_.samples.back().strain - stage_start.strain);
   response_.branches.push_back(b);
 
+  engine_.set_branch(0);
   engine_.restore(*resume);
   engine_.begin_control(main);
   branch_ = 0;

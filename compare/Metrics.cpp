@@ -484,8 +484,9 @@ MetricSet compute_metrics(const Curve &c, const MetricOptions &o)
       m.bulk_modulus = k;
   }
   if (!std::isfinite(m.bulk_modulus) || !(m.shear_modulus > 0.0)) {
-    m.notes.push_back("dilatancy angle needs K and G: the volume does not change in the initial "
-                      "window (isochoric?); give bulk_modulus");
+    m.notes.push_back("dilatancy angle not measured: the volume does not change in the initial window "
+                      "(an isochoric program), so the bulk modulus that splits off the elastic volumetric "
+                      "strain cannot be fitted");
   } else {
     std::size_t a = ipk, b = ipk;
     const double floor = y0 + (1.0 - o.dilatancy_window) * rise;

@@ -26,6 +26,15 @@ std::string format_number(double v)
   return buf;
 }
 
+double shown_difference(double a, double b)
+{
+  const double d = a - b, scale = std::max(std::abs(a), std::abs(b));
+  if (!std::isfinite(d) || !(scale > 0.0))
+    return d;
+  const double unit = std::pow(10.0, std::floor(std::log10(scale)) - 5.0);
+  return std::round(d / unit) * unit;
+}
+
 namespace {
 
 std::string html(const std::string &s)
@@ -63,7 +72,7 @@ std::string difference_label(const ReportInput &in, std::size_t k)
   return in.metrics[k].label + " - " + in.metrics[0].label;
 }
 
-double difference(const MetricValue &a, const MetricValue &ref) { return a.value - ref.value; }
+double difference(const MetricValue &a, const MetricValue &ref) { return shown_difference(a.value, ref.value); }
 
 /// Onset fields shown for a source, in display units.
 struct OnsetDisplay {
@@ -91,6 +100,14 @@ const char *colour(std::size_t k)
 {
   static const char *c[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
   return c[k % 6];
+}
+
+/// Line of response k: the first solid and widest, each later one narrower and dashed, so
+/// curves that coincide (the material point on the FE cube, to round-off) all stay visible.
+std::string line_style(std::size_t k)
+{
+  static const char *style[] = {"lw 3.5 dt 1", "lw 2.2 dt 2", "lw 1.4 dt 3", "lw 1.2 dt 4"};
+  return style[std::min<std::size_t>(k, 3)];
 }
 
 void write_text(const fs::path &p, const std::string &text)
@@ -165,18 +182,22 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
     for (const auto &[k, c] : curves) {
       const std::string lab = in.responses[k].label;
       p << (first ? "plot " : ", \\\n     ") << "'data/" << slug(k) << "_main.dat' using " << using_main
-        << " with lines lw 2 lc rgb '" << colour(k) << "' title '" << lab << "'";
+        << " with lines " << line_style(k) << " lc rgb '" << colour(k) << "' title '" << lab << "'";
       first = false;
       if (branches && !c.branches.empty())
         p << ", \\\n     'data/" << slug(k) << "_branches.dat' using 1:2 with lines dt 2 lw 1 lc rgb '"
           << colour(k) << "' title '" << lab << " unloading'";
     }
-    if (marks_too)
+    if (marks_too && !with_marks.empty()) {
+      // The key shows each mark's shape in black; the marks on the curves take their colours.
+      p << ", \\\n     NaN with points pt 7 ps 1.6 lc rgb 'black' title 'elastic limit'"
+        << ", \\\n     NaN with points pt 9 ps 1.8 lc rgb 'black' title 'peak'";
       for (std::size_t m = 0; m < with_marks.size(); ++m)
         p << ", \\\n     'data/marks.dat' index " << m << " every ::0::0 using 1:2 with points pt 7 ps 1.6 lc rgb '"
-          << colour(with_marks[m]) << "' title '" << (m == 0 ? "elastic limit" : "") << "'"
+          << colour(with_marks[m]) << "' notitle"
           << ", \\\n     'data/marks.dat' index " << m << " every ::1::1 using 1:2 with points pt 9 ps 1.8 lc rgb '"
-          << colour(with_marks[m]) << "' title '" << (m == 0 ? "peak" : "") << "'";
+          << colour(with_marks[m]) << "' notitle";
+    }
     return p.str() + "\n";
   };
   if (!curves.empty()) {

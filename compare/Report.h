@@ -65,6 +65,9 @@ ReportOutcome write_report(const ReportInput &input, const std::filesystem::path
 
 /// The one number format of the report: "%.6g", "null" for NaN or infinity.
 std::string format_number(double value);
+/// a - b to the digits format_number shows a and b with (six significant digits of the larger):
+/// a difference below the last shown digit is round-off and comes out as 0 (not -8.5e-14).
+double shown_difference(double a, double b);
 
 /// metrics.json text (also used by write_report).
 std::string metrics_json(const ReportInput &input);

@@ -1065,6 +1065,8 @@ std::unique_ptr<EngineState> CubeEngine::save() const
   return s;
 }
 
+void CubeEngine::set_branch(int id) { impl_->branch = id; }
+
 void CubeEngine::restore(const EngineState &state)
 {
   Impl &m = *impl_;
@@ -1093,6 +1095,11 @@ void CubeEngine::restore(const EngineState &state)
   m.onset_position = s.onset_position;
   m.onset_normal = s.onset_normal;
   m.preconditioner_stale = true;
+  // Field output past the restored time belongs to a path that was not kept (a branch's
+  // step redone to land on its target): out of the series.
+  auto &records = m.branch > 0 ? m.branch_records[m.branch] : m.pvd_records;
+  while (!records.empty() && records.back().first > m.time)
+    records.pop_back();
 }
 
 } // namespace geocomp::continuum

@@ -155,6 +155,9 @@ public:
   ResponseSample measure() override;
   std::unique_ptr<EngineState> save() const override;
   void restore(const EngineState &state) override;
+  /// Field output of branch `id` goes to `<basename>-branch<id>.pvd`, the main path's to
+  /// `<basename>.pvd` (time increasing).
+  void set_branch(int id) override;
 
   const CubeStatistics &statistics() const;
   unsigned n_dofs() const;

@@ -173,7 +173,9 @@ struct CubeEngine::Impl {
 
   // Output bookkeeping.
   unsigned measure_count = 0, output_count = 0;
-  std::vector<std::pair<double, std::string>> pvd_records;
+  std::vector<std::pair<double, std::string>> pvd_records;  ///< the main path's series
+  std::map<int, std::vector<std::pair<double, std::string>>> branch_records; ///< one series per branch
+  int branch = 0;                                           ///< the series being written (0: main)
 };
 
 } // namespace geocomp::continuum

@@ -1,4 +1,5 @@
-// CubeEngine output: one VTU per rank + a PVTU per sample, and a PVD index over time.
+// CubeEngine output: one VTU per rank + a PVTU per sample, and a PVD index over time: the
+// main path's in <basename>.pvd, each unloading branch's in <basename>-branch<id>.pvd.
 // Kept in its own translation unit: DataOut is the heaviest deal.II template to compile.
 //
 // Fields: the displacement (nodal vector) and, per cell, the quadrature-point averages of
@@ -73,10 +74,12 @@ void CubeEngine::Impl::write_output(double t)
   MPI_Barrier(comm);
   const std::string directory = prm.output_directory + "/";
   const std::string pvtu = data_out.write_vtu_with_pvtu_record(directory, prm.output_basename, output_count++, comm, 5);
-  pvd_records.emplace_back(t, pvtu);
+  auto &records = branch > 0 ? branch_records[branch] : pvd_records;
+  records.emplace_back(t, pvtu);
   if (root) {
-    std::ofstream pvd(directory + prm.output_basename + ".pvd");
-    DataOutBase::write_pvd_record(pvd, pvd_records);
+    const std::string series = branch > 0 ? "-branch" + std::to_string(branch) : "";
+    std::ofstream pvd(directory + prm.output_basename + series + ".pvd");
+    DataOutBase::write_pvd_record(pvd, records);
   }
 }
 

@@ -296,6 +296,15 @@ TEST(Report, HtmlNumbersEqualMetricsJsonAndPlotsArePngs)
     std::cout << "report kept in " << dir << "\n";
 }
 
+TEST(Report, DifferencesAreShownToTheDigitsOfTheValuesNotAsRoundOff)
+{
+  EXPECT_EQ(shown_difference(1.0 + 3e-15, 1.0), 0.0); // equal to the shown digits
+  EXPECT_EQ(format_number(shown_difference(0.1 + 0.2, 0.3)), "0");
+  EXPECT_EQ(format_number(shown_difference(4.6, 5.0)), "-0.4");
+  EXPECT_EQ(format_number(shown_difference(1234567.0, 1234560.0)), "10"); // shown 1.23457e+06, 1.23456e+06
+  EXPECT_TRUE(std::isnan(shown_difference(NAN, 1.0)));
+}
+
 // Without gnuplot: a clear message, still the tables and metrics.json; rewriting the same
 // folder replaces it whole and leaves no temporary folders behind.
 TEST(Report, WithoutGnuplotTablesAreStillWrittenAtomically)

@@ -25,6 +25,10 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <map>
@@ -348,7 +352,18 @@ TEST(CubeEngine, BBarKeepsHomogeneousStatesAndNewtonsQuadraticRate)
   EXPECT_GT(difference, 1e-6) << "B-bar must change the heterogeneous solution";
 }
 
-TEST(CubeEngine, UnloadingBranchLeavesTheMainPathUnchanged)
+/// The times of a PVD index, in file order.
+std::vector<double> pvd_times(const std::string &file)
+{
+  std::ifstream in(file);
+  std::vector<double> times;
+  for (std::string line; std::getline(in, line);)
+    if (const auto at = line.find("timestep=\""); at != std::string::npos)
+      times.push_back(std::stod(line.substr(at + 10)));
+  return times;
+}
+
+TEST(CubeEngine, UnloadingBranchLeavesTheMainPathUnchangedAndWritesItsFieldsAsASeriesOfItsOwn)
 {
   MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(5));
   m.cohesion = PiecewiseLinear({0.0, 0.01}, {20e3, 30e3});
@@ -358,7 +373,10 @@ TEST(CubeEngine, UnloadingBranchLeavesTheMainPathUnchanged)
   LoadingProgram branched = plain;
   branched.stages[1].unload_at = {parse_trigger("eps_zz <= -0.003", "test")};
   CubeEngine a(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
-  CubeEngine b(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
+  const std::string fields = "/tmp/geocomp-cube-branch-series-" + std::to_string(::getpid());
+  CubeParameters with_fields = cp;
+  with_fields.output_directory = fields;
+  CubeEngine b(with_fields, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
   const Response ra = ProgramRunner(plain, a).run();
   const Response rb = ProgramRunner(branched, b).run();
   ASSERT_EQ(rb.branches.size(), 1u);
@@ -367,6 +385,17 @@ TEST(CubeEngine, UnloadingBranchLeavesTheMainPathUnchanged)
   ASSERT_EQ(main_a.size(), main_b.size());
   for (std::size_t k = 0; k < main_a.size(); ++k)
     EXPECT_LT((main_a[k]->stress - main_b[k]->stress).norm(), 1e-9 * p) << "sample " << k;
+  // Fields: the main path's series runs forward in time, one entry per main-path sample; the
+  // branch has its own (it starts from an earlier state, so mixed in, time would go back).
+  const std::vector<double> main_times = pvd_times(fields + "/cube.pvd");
+  const std::vector<double> branch_times = pvd_times(fields + "/cube-branch1.pvd");
+  EXPECT_EQ(main_times.size(), main_b.size());
+  EXPECT_EQ(branch_times.size(), rb.samples.size() - main_b.size());
+  EXPECT_TRUE(std::is_sorted(main_times.begin(), main_times.end()) &&
+              std::adjacent_find(main_times.begin(), main_times.end()) == main_times.end());
+  ASSERT_FALSE(branch_times.empty());
+  EXPECT_LT(branch_times.front(), main_times.back()); // the branch left from inside the main path
+  std::filesystem::remove_all(fields);
 }
 
 TEST(CubeEngine, PostPeakCurvesOnThreeMeshesWithAndWithoutCrackBand)
