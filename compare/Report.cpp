@@ -3,6 +3,7 @@
 #include "common/Subprocess.h"
 #include "compare/JsonString.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -118,6 +119,22 @@ void write_text(const fs::path &p, const std::string &text)
     throw std::runtime_error("cannot write " + p.string());
 }
 
+/// The colour range of a map: the field's range, widened to at least 1 % of its largest
+/// magnitude about its middle, so that a uniform field (a homogeneous kappa, equal to
+/// 0.0025 %) shows as one colour rather than a pattern of round-off.
+std::string colour_range(const DisplacementMap &map)
+{
+  if (map.u.empty())
+    return "";
+  const auto [lo, hi] = std::minmax_element(map.u.begin(), map.u.end());
+  const double a = *lo * map.scale, b = *hi * map.scale;
+  const double half = 0.5 * std::max(b - a, 0.01 * std::max(std::abs(a), std::abs(b)));
+  if (!(half > 0.0) || !std::isfinite(half))
+    return "set cbrange [" + format_number(a - 1.0) + ":" + format_number(b + 1.0) + "]\n"; // all zero
+  const double mid = 0.5 * (a + b);
+  return "set cbrange [" + format_number(mid - half) + ":" + format_number(mid + half) + "]\n";
+}
+
 /// Data files and the gnuplot script; returns the PNG names the script makes.
 std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path &dir, std::string &script)
 {
@@ -229,8 +246,8 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
     gp << "\nset output '" << name << ".png'\nset title '" << title << "'\nset size ratio -1\nunset key\n"
        << "set xlabel 'x [m]'\nset ylabel 'z [m]'\nset cblabel '" << map.component << " [" << map.unit << "]'\n"
        << "set palette defined (0 '#313695', 1 '#74add1', 2 '#ffffbf', 3 '#f46d43', 4 '#a50026')\n"
-       << "plot 'data/" << name << ".dat' using 1:2:3 with points pt 5 ps 0.9 palette\n"
-       << "set size noratio\nset key top left box opaque\nunset cblabel\n";
+       << colour_range(map) << "plot 'data/" << name << ".dat' using 1:2:3 with points pt 5 ps 0.9 palette\n"
+       << "set size noratio\nset key top left box opaque\nunset cblabel\nset autoscale cb\n";
     pngs.push_back(name + ".png");
   }
   script = gp.str();

@@ -305,6 +305,32 @@ TEST(Report, DifferencesAreShownToTheDigitsOfTheValuesNotAsRoundOff)
   EXPECT_TRUE(std::isnan(shown_difference(NAN, 1.0)));
 }
 
+TEST(Report, AUniformMapIsOneColourAndAVaryingMapSpansItsRange)
+{
+  ReportInput in = sample_input();
+  in.maps.clear();
+  DisplacementMap uniform{"kappa", "kappa", {0.0, 1.0, 0.0, 1.0}, {0.0, 0.0, 1.0, 1.0}, {}, 100.0, "%"};
+  uniform.u = {0.02, 0.02 * (1 + 2.5e-5), 0.02, 0.02 * (1 - 1e-5)}; // equal to 0.0025 %
+  DisplacementMap varying = uniform;
+  varying.u = {-1e-3, 0.0, 1e-3, 2e-3};
+  in.maps = {uniform, varying};
+  const fs::path dir = scratch("maprange");
+  ReportOptions o;
+  o.gnuplot = "/nonexistent/gnuplot";
+  write_report(in, dir, o);
+  const std::string gp = read(dir / "report.gp");
+  std::vector<std::string> ranges;
+  for (std::size_t at = gp.find("set cbrange ["); at != std::string::npos; at = gp.find("set cbrange [", at + 1))
+    ranges.push_back(gp.substr(at + 13, gp.find(']', at) - at - 13));
+  ASSERT_EQ(ranges.size(), 2u) << gp;
+  const auto span = [](const std::string &r) {
+    return std::stod(r.substr(r.find(':') + 1)) - std::stod(r.substr(0, r.find(':')));
+  };
+  EXPECT_NEAR(span(ranges[0]), 0.01 * 2.0, 1e-4) << ranges[0]; // 1 % of 2 % (kappa in %)
+  EXPECT_NEAR(span(ranges[1]), 0.3, 1e-9) << ranges[1];        // -0.1 .. 0.2 mm
+  fs::remove_all(dir.parent_path());
+}
+
 // Without gnuplot: a clear message, still the tables and metrics.json; rewriting the same
 // folder replaces it whole and leaves no temporary folders behind.
 TEST(Report, WithoutGnuplotTablesAreStillWrittenAtomically)
