@@ -152,10 +152,10 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
   }
   for (const auto &[k, c] : curves) {
     std::ostringstream main, br;
-    main << "# x[%] y[MPa] gamma_max[%] eps_v[%](dilation+) p[MPa](compression+) q[MPa]\n";
+    main << "# x[%] y[MPa] gamma_max[%] eps_v[%](dilation+) p[MPa](compression+) q[MPa] p-p0[MPa](compression+)\n";
     for (std::size_t i = 0; i < c.x.size(); ++i)
       main << c.x[i] * 100 << ' ' << c.y[i] * 1e-6 << ' ' << c.gamma[i] * 100 << ' ' << c.eps_v[i] * 100 << ' '
-           << -c.p[i] * 1e-6 << ' ' << c.q[i] * 1e-6 << '\n';
+           << -c.p[i] * 1e-6 << ' ' << c.q[i] * 1e-6 << ' ' << -(c.p[i] - c.p.front()) * 1e-6 << '\n';
     br << "# unloading branches, one block each: x[%] y[MPa]\n";
     for (const auto &b : c.branches) {
       for (std::size_t i = 0; i < b.x.size(); ++i)
@@ -222,9 +222,15 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
        << "stress-strain with unloading branches'\nset xlabel '" << xl << "'\nset ylabel '" << yl << "'\n"
        << plot_list("1:2", true, true);
     pngs.push_back("stress_strain.png");
-    gp << "\nset output 'volumetric.png'\nset title 'Volumetric strain'\nset xlabel '" << xl
-       << "'\nset ylabel 'volumetric strain {/Symbol e}_v [%] (dilation +)'\n" << plot_list("1:4", false, false);
-    pngs.push_back("volumetric.png");
+    if (shear) { // the volume is held: its change is round-off; the mean stress shows the dilatancy
+      gp << "\nset output 'mean_stress.png'\nset title 'Mean stress change at constant volume'\nset xlabel '" << xl
+         << "'\nset ylabel 'p - p_0 [MPa] (compression +)'\n" << plot_list("1:7", false, false);
+      pngs.push_back("mean_stress.png");
+    } else {
+      gp << "\nset output 'volumetric.png'\nset title 'Volumetric strain'\nset xlabel '" << xl
+         << "'\nset ylabel 'volumetric strain {/Symbol e}_v [%] (dilation +)'\n" << plot_list("1:4", false, false);
+      pngs.push_back("volumetric.png");
+    }
     gp << "\nset output 'stress_path.png'\nset title 'Stress path'\nset key top left box opaque\n"
        << "set xlabel 'mean stress p [MPa] (compression +)'\nset ylabel 'deviator q = {/Symbol \\326}(3J_2) [MPa]'\n"
        << "set xrange [0:*]\nset yrange [0:*]\nset offsets 0, graph 0.08, graph 0.05, 0\n"
