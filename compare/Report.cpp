@@ -135,6 +135,31 @@ std::string colour_range(const DisplacementMap &map)
   return "set cbrange [" + format_number(mid - half) + ":" + format_number(mid + half) + "]\n";
 }
 
+/// Vertical dotted lines at the localization onsets found (Rudnicki-Rice's prediction and
+/// each engine's), labelled with their source, in the curves' strain measure.
+std::string onset_lines(const ReportInput &in)
+{
+  if (!in.verdict)
+    return "";
+  std::vector<OnsetEstimate> onsets{in.verdict->predicted};
+  for (const VerdictRow &r : in.verdict->rows)
+    onsets.push_back(r.onset);
+  std::ostringstream g;
+  int n = 0;
+  for (const OnsetEstimate &o : onsets) {
+    if (!o.found || !std::isfinite(o.strain))
+      continue;
+    std::string source = o.source;
+    std::replace(source.begin(), source.end(), '\'', '`');
+    const std::string x = format_number(o.strain * 100.0);
+    ++n;
+    g << "set arrow " << n << " from " << x << ", graph 0 to " << x << ", graph 1 nohead dt 3 lw 1.5 lc rgb '#555555'\n"
+      << "set label " << n << " 'onset: " << source << "' at " << x << ", graph 0.03 rotate by 90 left offset -0.8, 0"
+      << " font ',10' tc rgb '#555555'\n";
+  }
+  return g.str();
+}
+
 /// Data files and the gnuplot script; returns the PNG names the script makes.
 std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path &dir, std::string &script)
 {
@@ -220,7 +245,7 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
   if (!curves.empty()) {
     gp << "\nset output 'stress_strain.png'\nset title '" << (shear ? "Shear at constant volume: " : "Constant lateral pressure: ")
        << "stress-strain with unloading branches'\nset xlabel '" << xl << "'\nset ylabel '" << yl << "'\n"
-       << plot_list("1:2", true, true);
+       << onset_lines(in) << plot_list("1:2", true, true) << "unset arrow\nunset label\n";
     pngs.push_back("stress_strain.png");
     if (shear) { // the volume is held: its change is round-off; the mean stress shows the dilatancy
       gp << "\nset output 'mean_stress.png'\nset title 'Mean stress change at constant volume'\nset xlabel '" << xl

@@ -290,6 +290,12 @@ TEST(Report, HtmlNumbersEqualMetricsJsonAndPlotsArePngs)
   ASSERT_NE(diff, nullptr);
   EXPECT_NEAR(std::stod(diff->text), -0.4, 0.05);
   EXPECT_EQ(lookup(root, "calibrated_parameters/phi")->text, "38.2 deg");
+  // Each onset found is a labelled vertical line on the stress-strain plot, at its strain.
+  const std::string gp = read(dir / "report.gp");
+  for (const auto *o : {&in.verdict->predicted, &in.verdict->rows[0].onset, &in.verdict->rows[1].onset})
+    if (o->found)
+      EXPECT_NE(gp.find("from " + format_number(o->strain * 100) + ", graph 0"), std::string::npos) << o->source;
+  EXPECT_NE(gp.find("'onset: " + in.verdict->predicted.source + "'"), std::string::npos);
   if (!std::getenv("GEOCOMP_TEST_KEEP")) // set it to look at the report
     fs::remove_all(dir.parent_path());
   else
