@@ -72,7 +72,11 @@ void write_mid_plane(const continuum::CubeEngine &cube, const fs::path &dir)
 }
 
 /// FE maps beside the DEM ones: u_x and the equivalent plastic strain kappa on y = L0/2.
-void add_continuum_plane(compare::ReportInput &in, const fs::path &dir)
+/// The cube's bottom faces are rollers, so its displacements are measured from the x = 0
+/// face; the DEM's platens move symmetrically about the box centre. The FE u_x is shifted
+/// to the box centre, which moves by half the edge change, eps_xx L0 / 2 at the end of the
+/// main path, so both maps share one reference.
+void add_continuum_plane(compare::ReportInput &in, const fs::path &dir, const Response &response, double side)
 {
   const fs::path file = dir / continuum_plane_file;
   if (!fs::exists(file))
@@ -81,7 +85,12 @@ void add_continuum_plane(compare::ReportInput &in, const fs::path &dir)
   std::vector<std::vector<double>> c;
   for (const char *name : plane_columns)
     c.push_back(h5::read_doubles(f.id(), name));
-  compare::DisplacementMap ux{"FE cube, y = L0/2, end of the main path", "u_x", c[0], c[1], c[2]};
+  const std::vector<const ResponseSample *> main = response.path(0);
+  const double centre = main.empty() ? 0.0 : 0.5 * main.back()->strain(0, 0) * side;
+  for (double &u : c[2])
+    u -= centre;
+  compare::DisplacementMap ux{"FE cube, y = L0/2, end of the main path, from the box centre", "u_x", c[0], c[1],
+                              c[2]};
   compare::DisplacementMap kappa{"FE cube, y = L0/2, end of the main path", "kappa", c[0], c[1], c[4], 100.0, "%"};
   in.maps.push_back(ux);
   in.maps.push_back(kappa);
@@ -199,7 +208,7 @@ void add_dem_fields(compare::ReportInput &in, const fs::path &dir, std::vector<c
   const dem::ParticleFields &first = fields.front(), &last = fields.back();
   const double y_mid = 0.5 * (first.box_min.y() + first.box_max.y());
   std::ostringstream title;
-  title << "DEM, y = L0/2, from strain " << first.label << " to " << last.label;
+  title << "DEM, y = L0/2, from strain " << first.label << " to " << last.label << ", from the box centre";
   for (int component : {0, 2})
     in.maps.push_back(compare::midsection_map(snapshots.front(), snapshots.back(), y_mid, 2.0 * mean_radius,
                                               component, title.str()));
@@ -372,7 +381,7 @@ compare::ReportInput report_input(const CaseDescription &c, const std::vector<st
     else
       add_dem_fields(in, dir, onsets);
     if (engine == "continuum")
-      add_continuum_plane(in, dir);
+      add_continuum_plane(in, dir, response, cube_parameters(c, dir.string()).side);
   }
   in.calibrated_parameters = calibration::read_parameter_table(dir / "calibration");
   // DEM and FE maps side by side: DEM u_x | FE u_x, DEM u_z | FE kappa.

@@ -123,6 +123,20 @@ TEST(PairCommand, DemAndCubeGiveSnapshotsOnsetMapsAndTheSameCurvesAgain)
   const std::string metrics = read(out / "report/metrics.json");
   EXPECT_NE(metrics.find("DEM (particle local strain)"), std::string::npos);
   EXPECT_NE(metrics.find("\"DEM\""), std::string::npos);
+  // The FE u_x map is measured from the box centre, as the DEM's (symmetric platens): on a
+  // shortened x axis, positive on one side of the centre and negative on the other.
+  {
+    std::ifstream map(out / "report/data/map1.dat");
+    double lo = 0.0, hi = 0.0;
+    std::string line;
+    std::getline(map, line);
+    EXPECT_NE(line.find("u_x"), std::string::npos) << line;
+    for (double x, z, u; map >> x >> z >> u;)
+      lo = std::min(lo, u), hi = std::max(hi, u);
+    EXPECT_LT(lo, 0.0);
+    EXPECT_GT(hi, 0.0);
+    EXPECT_NEAR(lo, -hi, 0.2 * hi); // nearly antisymmetric about the centre
+  }
   // Rerun the DEM alone: the prepared specimen is reused and the curves are the same bits.
   const std::string stress1 = read_command("h5dump -d /response/stress '" + (out / "dem.h5").string() + "'");
   ASSERT_EQ(run(exe + "dem '" + c.string() + "' --force > '" + (s.dir / "out2").string() + "' 2>&1"), 0)
