@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libdeal.ii-dev libeigen3-dev libhdf5-openmpi-dev hdf5-tools openmpi-bin
   libgtest-dev libgmock-dev libbenchmark-dev libceres-dev nlohmann-json3-dev
-  gnuplot-nox clang libclang-rt-14-dev
+  gnuplot-nox clang libclang-rt-14-dev chromium
 )
 missing=()
 for p in "${packages[@]}"; do

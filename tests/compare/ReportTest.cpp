@@ -337,6 +337,81 @@ TEST(Report, AUniformMapIsOneColourAndAVaryingMapSpansItsRange)
   fs::remove_all(dir.parent_path());
 }
 
+namespace {
+/// Headless chromium on `page` (a file); its standard output (the DOM with --dump-dom) and
+/// standard error (the console with --enable-logging) in files of `dir`.
+SubprocessResult chromium(const std::vector<std::string> &flags, const fs::path &page, const fs::path &dir)
+{
+  std::vector<std::string> argv{"chromium", "--headless", "--no-sandbox", "--disable-gpu",
+                                "--allow-file-access-from-files", "--virtual-time-budget=5000"};
+  argv.insert(argv.end(), flags.begin(), flags.end());
+  argv.push_back("file://" + fs::absolute(page).string());
+  SubprocessOptions o;
+  o.stdout_file = dir / "chromium.out";
+  o.stderr_file = dir / "chromium.err";
+  o.timeout_seconds = 120;
+  return run_subprocess(argv, o);
+}
+
+/// What report-check.html found in `report` ("images N, links M: ok" or the problems).
+std::string browser_check(const fs::path &report, const fs::path &work)
+{
+  fs::copy_file(fs::path(std::getenv("GEOCOMP_SOURCE_DIR") ? std::getenv("GEOCOMP_SOURCE_DIR") : ".") /
+                  "tests/compare/report-check.html",
+                report / "geocomp-check.html", fs::copy_options::overwrite_existing);
+  const SubprocessResult r = chromium({"--dump-dom"}, report / "geocomp-check.html", work);
+  fs::remove(report / "geocomp-check.html");
+  EXPECT_TRUE(r.succeeded()) << r.error << " exit " << r.exit_code;
+  const std::string dom = read(work / "chromium.out");
+  const std::size_t at = dom.find("<pre id=\"result\">");
+  return at == std::string::npos ? "no result: " + dom.substr(0, 200) : dom.substr(at + 17, dom.find('<', at + 17) - at - 17);
+}
+
+/// The uncaught script errors chromium's console printed while loading `page`.
+std::string script_errors(const fs::path &page, const fs::path &work)
+{
+  chromium({"--enable-logging=stderr", "--v=0", "--dump-dom"}, page, work);
+  std::istringstream log(read(work / "chromium.err"));
+  std::string errors;
+  for (std::string line; std::getline(log, line);)
+    if (line.find("CONSOLE") != std::string::npos && line.find("Uncaught") != std::string::npos)
+      errors += line + "\n";
+  return errors;
+}
+} // namespace
+
+TEST(Report, OpensInABrowserWithEveryImageAndLinkAndNoScriptError)
+{
+  if (!geocomp::program_available("chromium") || !geocomp::program_available("gnuplot"))
+    GTEST_SKIP() << "chromium or gnuplot not installed (scripts/install-deps.sh installs both)";
+  const fs::path dir = scratch("browser");
+  const fs::path work = dir.parent_path();
+  const ReportOutcome out = write_report(sample_input(), dir);
+  ASSERT_TRUE(out.plots_made) << out.message;
+  const std::string html = read(dir / "index.html");
+  std::size_t links = 0;
+  for (std::size_t at = html.find("<a href=\""); at != std::string::npos; at = html.find("<a href=\"", at + 1))
+    links += html.compare(at + 9, 4, "http") != 0 && html[at + 9] != '#';
+  const std::string counts = "images " + std::to_string(out.plots.size()) + ", links " + std::to_string(links) + ": ";
+  EXPECT_GE(links, out.plots.size() + 1); // every plot, and metrics.json
+  EXPECT_EQ(browser_check(dir, work), counts + "ok");
+  EXPECT_EQ(script_errors(dir / "index.html", work), "");
+  // A screenshot of the page as a reader sees it, kept in the build folder.
+  const fs::path shot = fs::path(std::getenv("GEOCOMP_BINARY_DIR") ? std::getenv("GEOCOMP_BINARY_DIR") : ".") /
+                        "report-screenshot.png";
+  EXPECT_TRUE(chromium({"--window-size=1200,2600", "--screenshot=" + shot.string()}, dir / "index.html", work).succeeded());
+  EXPECT_GT(fs::file_size(shot), 50000u);
+  EXPECT_EQ(read(shot).substr(1, 3), "PNG");
+  std::cout << "screenshot: " << shot << "\n";
+  // The checks can fail: an image removed, and a page with a script error.
+  fs::remove(dir / out.plots.back());
+  EXPECT_EQ(browser_check(dir, work),
+            counts + "image not loaded: " + out.plots.back() + "; broken link: " + out.plots.back());
+  std::ofstream(work / "bad.html") << "<!DOCTYPE html><html><body><script>undefined_function();</script></body></html>";
+  EXPECT_NE(script_errors(work / "bad.html", work).find("undefined_function"), std::string::npos);
+  fs::remove_all(work);
+}
+
 // Without gnuplot: a clear message, still the tables and metrics.json; rewriting the same
 // folder replaces it whole and leaves no temporary folders behind.
 TEST(Report, WithoutGnuplotTablesAreStillWrittenAtomically)
