@@ -299,11 +299,16 @@ TEST(SizeDistributions, UniformRadiiFillTheRangeWithTheRightMean)
 // frictionless packing at rest (unbalanced-force ratio <= 1e-4, kinetic/elastic <=
 // 1e-6). The case is that of cases/store/small.prm (N = 1000, S0's contact law, sigma_0 = 2 MPa);
 // docs/specimens.md reports the numbers.
-TEST(SpecimenMeasurement, DISABLED_NewtonianVersusAristotelian)
+TEST(SpecimenPreparation, NewtonianPackingWithLocalDampingReachesTheAristotelianEquilibriumInFewerSteps)
 {
-  CaseDescription base; // cases/store/small.prm
+  // docs/specimens.md, section 2: both routes end at the same equilibrium (UFR <= 1e-4,
+  // K/E <= 1e-6 at eta = 0.69: the same coordination number and total wall force), and the
+  // Newtonian route with local damping gets there in fewer steps, against S0's remark (after
+  // Klishin & Mikenina). Measured here on 400 spheres of cases/store/small.prm's material at
+  // the growth inertial number 1e-2, one thread (the steps are the same bits every run).
+  CaseDescription base;
   base.seed = 2022;
-  base.specimen.particles = 1000;
+  base.specimen.particles = 400;
   base.specimen.packing_fraction = 0.69;
   base.specimen.radius = 0.0118;
   base.specimen.density = 2650.0;
@@ -314,26 +319,36 @@ TEST(SpecimenMeasurement, DISABLED_NewtonianVersusAristotelian)
   base.contact.restitution = 0.5;
   base.contact.particle_friction = 0.4;
   base.dem.threads = 1;
-  for (double inertial : {1e-3, 1e-2})
-    for (const auto &[aristotelian, beta] : {std::pair{false, 0.0}, std::pair{true, 1.0}, std::pair{true, 1.8}}) {
-      CaseDescription c = base;
-      c.specimen.aristotelian = aristotelian;
-      PreparationCriteria k;
-      k.growth_inertial_number = inertial;
-      k.aristotelian_beta = aristotelian ? beta : 1.0;
-      k.packing.max_time = 2.0;
-      const GrownPacking g = grow_packing(c, k);
-      const RestState r = rest_state(g.system);
-      double p = 0.0;
-      for (int w = 0; w < 6; ++w)
-        p += -g.system.wall(w).force.dot(g.system.wall(w).normal);
-      std::printf("[measure] I_g %.0e %-12s beta %.1f: growth %7llu steps %6.2f s | rest %7llu steps %6.2f s "
-                  "(converged %d, UFR %.1e, K/E %.1e) | total %7llu steps %6.2f s | Z %.2f, wall force sum %.4g N\n",
-                  inertial, aristotelian ? "Aristotelian" : "Newtonian", beta,
-                  (unsigned long long)g.growth.cost.steps, g.growth.cost.wall_seconds,
-                  (unsigned long long)g.rest.cost.steps, g.rest.cost.wall_seconds, int(g.rest.converged),
-                  r.unbalanced, r.kinetic_ratio(), (unsigned long long)(g.growth.cost.steps + g.rest.cost.steps),
-                  g.growth.cost.wall_seconds + g.rest.cost.wall_seconds,
-                  2.0 * double(g.system.n_touching_pairs()) / double(g.system.n_particles()), p);
-    }
+  struct Route {
+    unsigned long long steps;
+    double z, force;
+  };
+  std::vector<Route> routes;
+  for (const auto &[aristotelian, beta] : {std::pair{false, 0.0}, std::pair{true, 1.0}, std::pair{true, 1.8}}) {
+    CaseDescription c = base;
+    c.specimen.aristotelian = aristotelian;
+    PreparationCriteria k;
+    k.growth_inertial_number = 1e-2;
+    k.aristotelian_beta = aristotelian ? beta : 1.0;
+    k.packing.max_time = 2.0;
+    const GrownPacking g = grow_packing(c, k);
+    const RestState r = rest_state(g.system);
+    double force = 0.0;
+    for (int w = 0; w < 6; ++w)
+      force += -g.system.wall(w).force.dot(g.system.wall(w).normal);
+    routes.push_back({g.growth.cost.steps + g.rest.cost.steps,
+                      2.0 * double(g.system.n_touching_pairs()) / double(g.system.n_particles()), force});
+    std::printf("%-12s beta %.1f: growth %llu + rest %llu steps (converged %d, UFR %.1e, K/E %.1e), Z %.2f, "
+                "wall force sum %.4g N\n",
+                aristotelian ? "Aristotelian" : "Newtonian", beta, (unsigned long long)g.growth.cost.steps,
+                (unsigned long long)g.rest.cost.steps, int(g.rest.converged), r.unbalanced, r.kinetic_ratio(),
+                routes.back().z, force);
+    EXPECT_TRUE(g.rest.converged) << (aristotelian ? "Aristotelian" : "Newtonian") << " beta " << beta;
+  }
+  for (std::size_t k = 1; k < routes.size(); ++k) {
+    EXPECT_NEAR(routes[k].z, routes[0].z, 0.15) << "route " << k << ": the same coordination";
+    EXPECT_NEAR(routes[k].force, routes[0].force, 0.05 * routes[0].force) << "route " << k << ": the same load";
+    EXPECT_GT(double(routes[k].steps), 2.0 * double(routes[0].steps)) << "route " << k;
+    std::printf("Aristotelian route %zu / Newtonian: %.1fx the steps\n", k, double(routes[k].steps) / routes[0].steps);
+  }
 }
