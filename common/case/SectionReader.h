@@ -9,6 +9,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace geocomp::sections {
 
@@ -20,6 +22,45 @@ struct Reader {
     throw CaseError(file, parameter, message);
   }
 };
+
+/// "0:1e5, 0.02:1.2e5" -> (kappa, value) points, kappa from 0 strictly increasing; fails
+/// naming `parameter` (the piecewise-linear tables of the continuum and the calibration).
+std::vector<std::pair<double, double>> parse_points(const std::string &text, const std::string &parameter,
+                                                    const Reader &r);
+
+/// Reads every field a struct's visit list names from the ParameterHandler's current
+/// subsection, each by its type - so a parse function is `visit(p, ReadEntries{...})` and
+/// the checks between entries, and an entry is written once: declared, and named in the
+/// visit list beside its field.
+struct ReadEntries {
+  dealii::ParameterHandler &prm;
+  const Reader &reader;
+  std::string section; ///< for messages: `section/entry`
+
+  void operator()(const char *entry, std::string &v) const { v = prm.get(entry); }
+  void operator()(const char *entry, double &v) const { v = prm.get_double(entry); }
+  void operator()(const char *entry, bool &v) const { v = prm.get_bool(entry); }
+  void operator()(const char *entry, unsigned int &v) const { v = static_cast<unsigned int>(prm.get_integer(entry)); }
+  void operator()(const char *entry, unsigned long long &v) const
+  {
+    v = static_cast<unsigned long long>(prm.get_integer(entry));
+  }
+  void operator()(const char *entry, std::vector<std::string> &v) const;
+  void operator()(const char *entry, std::vector<double> &v) const;
+  void operator()(const char *entry, std::vector<std::pair<double, double>> &v) const
+  {
+    v = parse_points(prm.get(entry), section + "/" + entry, reader);
+  }
+};
+
+/// Enters `section`, reads the fields `visit` names into `p`, leaves.
+template <class P>
+void read_section(dealii::ParameterHandler &prm, const Reader &r, const std::string &section, P &p)
+{
+  prm.enter_subsection(section);
+  P::visit(p, ReadEntries{prm, r, section});
+  prm.leave_subsection();
+}
 
 /// The sections every case shares (ProgramSection.cpp, OutputSection.cpp, CaseHead.cpp).
 void declare_head(dealii::ParameterHandler &prm);

@@ -2,10 +2,60 @@
 // (The `program` section has a file of its own: ProgramSection.cpp.)
 #include "common/case/SectionReader.h"
 
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <sstream>
+
 namespace geocomp::sections {
+
+void ReadEntries::operator()(const char *entry, std::vector<std::string> &v) const
+{
+  v = dealii::Utilities::split_string_list(prm.get(entry));
+}
+
+void ReadEntries::operator()(const char *entry, std::vector<double> &v) const
+{
+  v = dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(prm.get(entry)));
+}
+
 
 using dealii::Patterns::Anything;
 using dealii::Patterns::Bool;
+
+std::vector<std::pair<double, double>> parse_points(const std::string &text, const std::string &parameter,
+                                                    const Reader &r)
+{
+  std::vector<std::pair<double, double>> t;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos)
+      r.fail(parameter, "expected 'kappa:value' pairs separated by commas, got '" + item + "'");
+    double k = 0, v = 0;
+    try {
+      std::size_t u1 = 0, u2 = 0;
+      const std::string ks = item.substr(0, colon), vs = item.substr(colon + 1);
+      k = std::stod(ks, &u1);
+      v = std::stod(vs, &u2);
+      if (ks.find_first_not_of(" \t", u1) != std::string::npos || vs.find_first_not_of(" \t", u2) != std::string::npos)
+        throw std::invalid_argument(item);
+    } catch (const std::exception &) {
+      r.fail(parameter, "expected numbers in 'kappa:value', got '" + item + "'");
+    }
+    if (!std::isfinite(k) || !std::isfinite(v))
+      r.fail(parameter, "expected finite numbers, got '" + item + "'");
+    if (!t.empty() && !(k > t.back().first))
+      r.fail(parameter, "kappa must increase strictly from one point to the next");
+    t.emplace_back(k, v);
+  }
+  if (t.empty())
+    r.fail(parameter, "expected at least one 'kappa:value' point");
+  if (t.front().first != 0.0)
+    r.fail(parameter, "the first point must be at kappa = 0");
+  return t;
+}
 
 void declare_head(dealii::ParameterHandler &prm)
 {
@@ -29,11 +79,7 @@ void declare_output(dealii::ParameterHandler &prm)
 OutputParameters parse_output(dealii::ParameterHandler &prm, const Reader &r)
 {
   OutputParameters p;
-  prm.enter_subsection("output");
-  p.directory = prm.get("directory");
-  p.report = prm.get_bool("report");
-  p.fields = prm.get_bool("fields");
-  prm.leave_subsection();
+  read_section(prm, r, "output", p);
   if (p.directory.empty())
     r.fail("output/directory", "expected a folder name");
   return p;

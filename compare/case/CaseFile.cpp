@@ -83,9 +83,7 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
 
   const sections::Reader reader{path};
   try {
-    c.title = prm.get("title");
-    c.engines = Utilities::split_string_list(prm.get("engines"));
-    c.seed = static_cast<unsigned long long>(prm.get_integer("seed"));
+    CaseHead::visit(static_cast<CaseHead &>(c), sections::ReadEntries{prm, reader, ""});
     if (c.engines.empty())
       reader.fail("engines", "expected at least one of dem, continuum, material-point");
     sections::parse_dem_sections(prm, reader, c);

@@ -82,64 +82,14 @@ void declare_continuum(dealii::ParameterHandler &prm)
 
 HardeningTable parse_table(const std::string &text, const std::string &parameter, const Reader &r)
 {
-  HardeningTable t;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    const auto colon = item.find(':');
-    if (colon == std::string::npos)
-      r.fail(parameter, "expected 'kappa:value' pairs separated by commas, got '" + item + "'");
-    double k = 0, v = 0;
-    try {
-      std::size_t u1 = 0, u2 = 0;
-      const std::string ks = item.substr(0, colon), vs = item.substr(colon + 1);
-      k = std::stod(ks, &u1);
-      v = std::stod(vs, &u2);
-      if (ks.find_first_not_of(" \t", u1) != std::string::npos || vs.find_first_not_of(" \t", u2) != std::string::npos)
-        throw std::invalid_argument(item);
-    } catch (const std::exception &) {
-      r.fail(parameter, "expected numbers in 'kappa:value', got '" + item + "'");
-    }
-    if (!std::isfinite(k) || !std::isfinite(v))
-      r.fail(parameter, "expected finite numbers, got '" + item + "'");
-    if (!t.points.empty() && !(k > t.points.back().first))
-      r.fail(parameter, "kappa must increase strictly from one point to the next");
-    t.points.emplace_back(k, v);
-  }
-  if (t.points.empty())
-    r.fail(parameter, "expected at least one 'kappa:value' point");
-  if (t.points.front().first != 0.0)
-    r.fail(parameter, "the first point must be at kappa = 0");
-  return t;
+  return HardeningTable{parse_points(text, parameter, r)};
 }
 
 ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader &r)
 {
   ContinuumParameters p;
   prm.enter_subsection("continuum");
-  p.model = prm.get("model");
-  p.dp_matching = prm.get("drucker prager matching");
-  p.youngs_modulus = prm.get_double("youngs modulus");
-  p.poisson_ratio = prm.get_double("poisson ratio");
-  p.cohesion = parse_table(prm.get("cohesion"), "continuum/cohesion", r);
-  p.friction_angle = parse_table(prm.get("friction angle"), "continuum/friction angle", r);
-  p.dilatancy_angle = parse_table(prm.get("dilatancy angle"), "continuum/dilatancy angle", r);
-  p.cells_per_edge = prm.get_integer("cells per edge");
-  p.degree = prm.get_integer("degree");
-  p.volumetric_integration = prm.get("volumetric integration");
-  p.kinematics = prm.get("kinematics");
-  p.imperfection_radius = prm.get_double("imperfection radius");
-  p.imperfection_factor = prm.get_double("imperfection factor");
-  p.imperfection_centre = dealii::Utilities::string_to_double(
-    dealii::Utilities::split_string_list(prm.get("imperfection centre")));
-  p.regularization = prm.get("regularization");
-  p.linear_solver = prm.get("linear solver");
-  p.preconditioner = prm.get("preconditioner");
-  p.near_null_space = prm.get("near null space");
-  p.newton_tolerance = prm.get_double("newton tolerance");
-  p.load_steps_per_sample = prm.get_integer("load steps per sample");
-  p.point_substeps = prm.get_integer("point substeps per sample");
-  p.reference_element_size = prm.get_double("reference element size");
+  ContinuumParameters::visit(p, ReadEntries{prm, r, "continuum"});
   p.nikolaevsky = parse_nikolaevsky(prm, r);
   prm.leave_subsection();
   if (p.volumetric_integration == "b-bar" && p.kinematics == "finite strain")

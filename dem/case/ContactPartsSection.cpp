@@ -39,20 +39,8 @@ void declare_contact_parts(dealii::ParameterHandler &prm)
   prm.leave_subsection();
 }
 
-void parse_contact_parts(dealii::ParameterHandler &prm, const Reader &r, ContactParameters &p)
+void check_contact_parts(const ContactParameters &p, const Reader &r)
 {
-  prm.enter_subsection("contact");
-  p.tangential_model = prm.get("tangential model");
-  p.slip_displacement = prm.get_double("slip displacement");
-  p.slip_retention = prm.get_double("slip retention");
-  p.rolling_friction = prm.get_double("rolling friction");
-  p.rolling_stiffness_ratio = prm.get_double("rolling stiffness ratio");
-  p.cohesion = prm.get_double("cohesion");
-  p.cohesion_modulus = prm.get_double("cohesion modulus");
-  p.adhesion = prm.get_double("adhesion");
-  p.adhesion_modulus = prm.get_double("adhesion modulus");
-  p.wall_bonding = prm.get_bool("wall bonding");
-  prm.leave_subsection();
   const bool bonds = p.cohesion > 0.0 || p.adhesion > 0.0;
   if (p.model == "hertz-mindlin" && p.tangential_model != "coulomb")
     r.fail("contact/tangential model", "'s3-stick-slip' needs the linear normal model");

@@ -80,23 +80,9 @@ void declare_contact(dealii::ParameterHandler &prm)
 ContactParameters parse_contact(dealii::ParameterHandler &prm, const Reader &r)
 {
   ContactParameters p;
-  prm.enter_subsection("contact");
-  p.model = prm.get("model");
-  p.youngs_modulus = prm.get_double("youngs modulus");
-  p.poisson_ratio = prm.get_double("poisson ratio");
-  p.impact_velocity = prm.get_double("impact velocity");
-  p.restitution = prm.get_double("restitution");
-  p.normal_stiffness = prm.get_double("normal stiffness");
-  p.normal_damping = prm.get_double("normal damping");
-  p.normal_damping_per_mass = prm.get_double("normal damping per mass");
-  p.tangential_stiffness_ratio = prm.get_double("tangential stiffness ratio");
-  p.tangential_stiffness = prm.get_double("tangential stiffness");
-  p.tangential_damping_ratio = prm.get_double("tangential damping ratio");
-  p.tangential_damping = prm.get_double("tangential damping");
-  p.particle_friction = prm.get_double("particle friction");
-  p.wall_friction = prm.get_double("wall friction");
-  prm.leave_subsection();
+  read_section(prm, r, "contact", p); // the base entries and the optional parts
   check_linear_contact_entries(p, r);
+  check_contact_parts(p, r);
   return p;
 }
 

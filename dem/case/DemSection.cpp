@@ -42,23 +42,10 @@ void declare_dem(dealii::ParameterHandler &prm)
   prm.leave_subsection();
 }
 
-DemParameters parse_dem(dealii::ParameterHandler &prm, const Reader &)
+DemParameters parse_dem(dealii::ParameterHandler &prm, const Reader &r)
 {
   DemParameters p;
-  prm.enter_subsection("dem");
-  p.time_step_safety = prm.get_double("time step safety");
-  p.threads = prm.get_integer("threads");
-  p.local_damping = prm.get_double("local damping");
-  p.skin = prm.get_double("skin");
-  p.servo_max_velocity = prm.get_double("servo max velocity");
-  p.servo_speed_ratio = prm.get_double("servo speed ratio");
-  p.servo_gain = prm.get_double("servo gain");
-  p.servo_integral_gain = prm.get_double("servo integral gain");
-  p.guard_min_edge = prm.get_double("guard min edge");
-  p.guard_stress_ratio = prm.get_double("guard stress ratio");
-  p.snapshots = prm.get_integer("snapshots");
-  p.checkpoint_interval = prm.get_double("checkpoint interval");
-  prm.leave_subsection();
+  read_section(prm, r, "dem", p);
   return p;
 }
 
@@ -74,7 +61,6 @@ void parse_dem_sections(dealii::ParameterHandler &prm, const Reader &r, dem::Dem
 {
   c.specimen = parse_specimen(prm, r);
   c.contact = parse_contact(prm, r);
-  parse_contact_parts(prm, r, c.contact);
   c.dem = parse_dem(prm, r);
 }
 

@@ -13,7 +13,8 @@ void declare_contact(dealii::ParameterHandler &prm);
 dem::ContactParameters parse_contact(dealii::ParameterHandler &prm, const Reader &r);
 /// Rolling, bonds, S3 friction: further entries of `contact` (ContactPartsSection.cpp).
 void declare_contact_parts(dealii::ParameterHandler &prm);
-void parse_contact_parts(dealii::ParameterHandler &prm, const Reader &r, dem::ContactParameters &p);
+/// The parts' checks (S3 friction and bonds need the linear normal model); parse_contact calls it.
+void check_contact_parts(const dem::ContactParameters &p, const Reader &r);
 void declare_dem(dealii::ParameterHandler &prm);
 dem::DemParameters parse_dem(dealii::ParameterHandler &prm, const Reader &r);
 

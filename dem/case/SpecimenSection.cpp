@@ -53,24 +53,7 @@ void declare_specimen(dealii::ParameterHandler &prm)
 SpecimenParameters parse_specimen(dealii::ParameterHandler &prm, const Reader &r)
 {
   SpecimenParameters p;
-  prm.enter_subsection("specimen");
-  p.source = prm.get("source");
-  p.store_file = prm.get("store file");
-  p.store_name = prm.get("store name");
-  p.text_file = prm.get("text file");
-  p.particles = prm.get_integer("particles");
-  p.packing_fraction = prm.get_double("packing fraction");
-  p.radius = prm.get_double("radius");
-  p.size_distribution = prm.get("size distribution");
-  p.radius_spread = prm.get_double("radius spread");
-  p.lognormal_sigma = prm.get_double("lognormal sigma");
-  p.box_size = prm.get_double("box size");
-  p.density = prm.get_double("density");
-  p.isotropic_pressure = prm.get_double("isotropic pressure");
-  p.aristotelian = prm.get_bool("aristotelian");
-  p.frictionless_relaxation = prm.get("frictionless relaxation");
-  p.preparation = prm.get("preparation");
-  prm.leave_subsection();
+  read_section(prm, r, "specimen", p);
   if (p.aristotelian && p.frictionless_relaxation == "fire")
     r.fail("specimen/frictionless relaxation", "fire needs Newtonian dynamics: set aristotelian = false or frictionless relaxation = damped");
   if (p.source == "store" && (p.store_file.empty() || p.store_name.empty()))
