@@ -1,6 +1,7 @@
 // `geocomp pack`: builds a case's specimen (S0 radius growth + consolidation) into a core store.
 #include "CaseValidation.h"
 #include "Commands.h"
+#include "OutputFolderLock.h"
 #include "Progress.h"
 
 #include "compare/case/CaseDescription.h"
@@ -50,6 +51,11 @@ Command pack_command()
     if (!dem::valid_specimen_name(name))
       throw CaseError(d.file, "specimen/store name",
                       "'" + name + "' is not a specimen name (letters, digits, '_', '-', '.')");
+    // One writer per store folder at a time: two packs into one store would each rename their
+    // copy over the other's, and one specimen would be lost.
+    const fs::path folder = store.has_parent_path() ? store.parent_path() : fs::path(".");
+    const OutputFolderLock lock(folder, d.file,
+                                a.has("store") ? "--store" : "specimen/store file");
     if (fs::exists(store)) {
       try {
         dem::stored_specimen_names(store); // refuse to overwrite a file that is not a store

@@ -629,6 +629,7 @@ Command existing_results_command(const std::string &name, const std::string &sum
       throw UsageError("expected exactly one case file");
     return guarded([&] {
       const CaseDescription cd = read_case(a.positional[0]);
+      validate_engines(cd, {}); // the same refusals as every other command, before anything is read
       const fs::path dir = a.has("output") ? fs::path(a.get("output")) : fs::path(cd.output.directory);
       std::unique_ptr<OutputFolderLock> lock;
       if (writes)

@@ -35,7 +35,7 @@ std::vector<std::string> case_commands()
     std::istringstream words(line);
     std::string name;
     words >> name;
-    for (const char *c : {"check", "dem", "continuum", "material-point", "pair", "pack", "calibrate"})
+    for (const char *c : {"check", "dem", "continuum", "material-point", "pair", "pack", "calibrate", "report", "compare"})
       if (name == c)
         out.push_back(name);
   }
@@ -101,7 +101,8 @@ TEST_P(BadCasesFor, EachIsRefusedWithFileParameterExitTwoAndNoOutput)
 }
 
 INSTANTIATE_TEST_SUITE_P(BadCases, BadCasesFor,
-                         ::testing::Values("check", "dem", "continuum", "material-point", "pair", "pack", "calibrate"),
+                         ::testing::Values("check", "dem", "continuum", "material-point", "pair", "pack", "calibrate",
+                                           "report", "compare"),
                          [](const ::testing::TestParamInfo<std::string> &info) {
                            std::string name = info.param;
                            std::replace(name.begin(), name.end(), '-', '_');

@@ -79,6 +79,33 @@ TEST(OutputFolder, ASecondRunIntoALockedFolderExitsTwoNamingTheHolderAndWritesNo
   EXPECT_EQ(files, 1u) << "only the held lock file";
 }
 
+TEST(OutputFolder, APackIntoAStoreWhoseFolderIsLockedExitsTwoNamingTheHolderAndPreparesNothing)
+{
+  // Two packs into one store would each rename their copy over the other's.
+  const Scratch s("output-pack-locked");
+  const fs::path out = s.dir / "store";
+  fs::create_directories(out);
+  const std::string holder = "process " + std::to_string(::getpid()) + " on test-host: geocomp pack other.prm\n";
+  const HeldLock lock(out, holder);
+  const fs::path c = s.dir / "pack.prm";
+  std::ofstream(c) << "set engines = dem\nsubsection specimen\n  set particles = 50\n  set store file = "
+                   << (out / "s.h5").string() << "\n  set store name = small\nend\n"
+                   << "subsection program\n  subsection stage 1\n    set z = rate -1\n"
+                   << "    set stop when = eps_zz <= -0.01\n    set max duration = 1\n  end\nend\n";
+  for (const bool option : {false, true}) {
+    std::vector<std::string> argv{GEOCOMP_EXE, "pack", c.string()};
+    if (option)
+      argv.insert(argv.end(), {"--store", (out / "s.h5").string()});
+    const auto r = run_program(argv, s.dir);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("in use by another run (process " + std::to_string(::getpid())), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(option ? "parameter '--store'" : "parameter 'specimen/store file'"), std::string::npos)
+      << r.err;
+    EXPECT_EQ(r.out.find("preparing"), std::string::npos) << r.out;
+  }
+  EXPECT_FALSE(fs::exists(out / "s.h5"));
+}
+
 TEST(OutputFolder, AStaleLockOfAProcessThatIsGoneIsTakenOverWithAWarning)
 {
   const Scratch s("output-stale");
