@@ -110,11 +110,9 @@ class ContactPass::Stages
 public:
   Stages(ContactPass& pass, const Law& law, const ContactPassInput& in, const ForceRequest& request)
     : pass_(pass), law_(law), in_(in), dt_h_(request.dt_history), kick_dt_(request.kick_dt),
-      record_(request.record), store_(in.store), x_(in.store.x), v_(in.store.v), w_(in.store.omega),
-      R_(in.store.radius), im_(in.store.inv_mass), pairs_(in.lists.pairs), wslots_(in.lists.walls),
-      loads_(in.lists.pair_loads), wloads_(in.lists.wall_loads), pmem_(in.lists.pair_memory),
-      wmem_(in.lists.wall_memory), scatter_(pass.scatter_), n_(in.store.size()), nbp_(n_blocks(pairs_.size())),
-      nbw_(n_blocks(wslots_.size())), nb_particles_(n_blocks(n_)), mu_(in.mu), g_(in.gravity)
+      record_(request.record), store_(in.store), lists_(in.lists), scatter_(pass.scatter_), n_(in.store.size()),
+      nbp_(n_blocks(lists_.pairs.size())), nbw_(n_blocks(lists_.walls.size())), nb_particles_(n_blocks(n_)),
+      mu_(in.mu), g_(in.gravity), workers_(in.threads)
   {}
 
   /// The batched kernels' arguments (S0's law on an AVX2 processor: four slots at a
@@ -123,19 +121,19 @@ public:
   {
     if constexpr (Track) in_.energy.begin_contact_blocks(nbp_ + nbw_);
     pass_.kick_losses_.assign(nb_particles_, 0.0);
-    in_.walls.resize_terms(wslots_.size());
+    in_.walls.resize_terms(lists_.walls.size());
     if constexpr (kLinear<Law>) {
-      batched_ = in_.batched_pairs && !pairs_.empty() && n_ > 0;
+      batched_ = in_.batched_pairs && !lists_.pairs.empty() && n_ > 0;
       if (batched_) {
-        batch_ = pair_batch_args(law_, store_, in_.lists, mu_, dt_h_, Track);
+        batch_ = pair_batch_args(law_, store_, lists_, mu_, dt_h_, Track);
         batch_.prefetch = in_.prefetch;
         batch_.record_loads = record_;
       }
       // Wall slots too when every wall is an unbounded plane.
-      if (in_.batched_pairs && in_.walls.all_unbounded() && !wslots_.empty()) {
-        wall_batch_ = pair_batch_args(law_, store_, in_.lists, 0.0, dt_h_, Track);
-        wall_batch_.slots = reinterpret_cast<unsigned char*>(wslots_.data());
-        wall_batch_.loads = reinterpret_cast<double*>(wloads_.data());
+      if (in_.batched_pairs && in_.walls.all_unbounded() && !lists_.walls.empty()) {
+        wall_batch_ = pair_batch_args(law_, store_, lists_, 0.0, dt_h_, Track);
+        wall_batch_.slots = reinterpret_cast<unsigned char*>(lists_.walls.data());
+        wall_batch_.loads = reinterpret_cast<double*>(lists_.wall_loads.data());
         wall_batch_.record_loads = true;  // the walls' records and pass B read every wall load
         in_.walls.pack(wall_batch_);
       }
@@ -156,7 +154,7 @@ public:
         args->velocity_inv_mass = packed_vm_;
       }
     }
-    scatter_.plan(in_.lists, n_, kBlock, workers_, in_.list_builds);
+    scatter_.plan(lists_, n_, kBlock, workers_, in_.list_builds);
     rows_ = scatter_.rows();
     if (kick_dt_ > 0.0 && n_ > 0 && in_.batched_sweeps) {
       closing_.rows = reinterpret_cast<const double*>(rows_);
@@ -173,13 +171,17 @@ public:
   /// Every row starts from the body's weight; the packed copies of the bodies.
   void start_rows()
   {
+    const Arrays a = arrays();
+    PackedBody* const packed_xr = packed_xr_;
+    PackedBody* const packed_vm = packed_vm_;
+    const Vec3 g = g_;
 #pragma omp for schedule(static)
     for (std::int64_t p = 0; p < std::int64_t(n_); ++p) {
-      const Vec3 weight = store_.mass[p] * g_;
-      rows_[p] = LoadRow{{weight.x(), weight.y(), weight.z(), 0.0}, {0.0, 0.0, 0.0, 0.0}};
-      if (packed_xr_) {
-        packed_xr_[p] = PackedBody{{x_[p].x(), x_[p].y(), x_[p].z(), R_[p]}};
-        packed_vm_[p] = PackedBody{{v_[p].x(), v_[p].y(), v_[p].z(), im_[p]}};
+      const Vec3 weight = a.mass[p] * g;
+      a.rows[p] = LoadRow{{weight.x(), weight.y(), weight.z(), 0.0}, {0.0, 0.0, 0.0, 0.0}};
+      if (packed_xr) {
+        packed_xr[p] = PackedBody{{a.x[p].x(), a.x[p].y(), a.x[p].z(), a.R[p]}};
+        packed_vm[p] = PackedBody{{a.v[p].x(), a.v[p].y(), a.v[p].z(), a.im[p]}};
       }
     }
   }
@@ -192,16 +194,18 @@ public:
 #else
     const int n_threads = 1, thread = 0;
 #endif
+    const Arrays a = arrays();
+    const std::size_t n_pairs = lists_.pairs.size();
     for (int wk = thread; wk < workers_; wk += n_threads) {
       const auto [b_first, b_last] = LoadScatter::blocks_of(wk, workers_, nbp_);
       [[maybe_unused]] PairBatchArgs wbatch = batch_;
-      wbatch.rows = reinterpret_cast<double*>(rows_);  // 8 doubles per row, 64-byte aligned
+      wbatch.rows = reinterpret_cast<double*>(a.rows);  // 8 doubles per row, 64-byte aligned
       wbatch.row_of = scatter_.targets();
       wbatch.shared = LoadScatter::kShared;
       wbatch.junk_row = scatter_.junk_row(wk);
       for (std::int64_t b = std::int64_t(b_first); b < std::int64_t(b_last); ++b) {
         BlockLosses lost;
-        const std::size_t end = std::min(pairs_.size(), std::size_t(b + 1) * kBlock);
+        const std::size_t end = std::min(n_pairs, std::size_t(b + 1) * kBlock);
         if constexpr (kLinear<Law>) {
           if (batched_) {
             const PairBatchLosses l = evaluate_linear_pairs_batched(wbatch, std::size_t(b) * kBlock, end);
@@ -209,7 +213,7 @@ public:
             continue;
           }
         }
-        for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) pair_slot(c, wk, lost);
+        for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) pair_slot(a, c, wk, lost);
         if constexpr (Track) lost.store(in_.energy.contact_block(b));
       }
     }
@@ -219,20 +223,23 @@ public:
   /// walls' records.
   void pass_a_walls()
   {
+    const Arrays a = arrays();
+    const std::size_t n_slots = lists_.walls.size();
+    WallSet& walls = in_.walls;
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < std::int64_t(nbw_); ++b) {
       BlockLosses lost;
-      const std::size_t end = std::min(wslots_.size(), std::size_t(b + 1) * kBlock);
+      const std::size_t end = std::min(n_slots, std::size_t(b + 1) * kBlock);
       if constexpr (kLinear<Law>) {
         if (wall_batch_.wall_point) {  // four slots at a time (PairBatchKernel.h, same bits)
           const PairBatchLosses l = evaluate_linear_walls_batched(wall_batch_, std::size_t(b) * kBlock, end);
           for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c)  // unbounded planes: gap's normal
-            in_.walls.record_term(law_, store_, in_.lists, c, in_.walls[wslots_[c].wall].normal);
+            walls.record_term(law_, store_, lists_, c, walls[a.wslots[c].wall].normal);
           if constexpr (Track) BlockLosses{l.damping, l.friction, 0.0}.store(in_.energy.contact_block(nbp_ + b));
           continue;
         }
       }
-      for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) wall_slot(c, lost);
+      for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) wall_slot(a, c, lost);
       if constexpr (Track) lost.store(in_.energy.contact_block(nbp_ + b));
     }
   }
@@ -241,28 +248,30 @@ public:
   /// its weight, into its row (the shared bodies, one layer of storage, split evenly).
   void pass_b_shared()
   {
-    const auto& off = in_.lists.incident_offset;
-    const auto& inc = in_.lists.incident;
+    const Arrays a = arrays();
+    const auto& off = lists_.incident_offset;
+    const auto& inc = lists_.incident;
     const std::vector<Index>& shared = scatter_.shared_bodies();
+    const Vec3 g = g_;
 #pragma omp for schedule(static)
     for (std::int64_t k = 0; k < std::int64_t(shared.size()); ++k) {
       const Index p = shared[std::size_t(k)];
-      const double Rp = R_[p];
-      Vec3 f = store_.mass[p] * g_, t = Vec3::Zero();
+      const double Rp = a.R[p];
+      Vec3 f = a.mass[p] * g, t = Vec3::Zero();
       for (std::uint32_t e = off[p]; e < off[p + 1]; ++e) {
-        const PairSlot& s = pairs_[inc[e] >> 1];
-        const SlotLoad& load = loads_[inc[e] >> 1];
+        const PairSlot& s = a.pairs[inc[e] >> 1];
+        const SlotLoad& load = a.loads[inc[e] >> 1];
         // +F on j, -F on i, without a branch on the role; f + (-1 x F) and f - F are the
         // same IEEE operation (measured: no change in speed against the branch).
         const double sign = (inc[e] & 1u) ? 1.0 : -1.0;
         f += sign * load.force;
         t -= (Rp - 0.5 * s.overlap) * load.lever;  // T = -(R - delta/2) n x F_t
         if constexpr (Law::has_rolling) {          // M_r on j, -M_r on i
-          if (inc[e] & 1u) t += pmem_[inc[e] >> 1].rolling;
-          else t -= pmem_[inc[e] >> 1].rolling;
+          if (inc[e] & 1u) t += a.pmem[inc[e] >> 1].rolling;
+          else t -= a.pmem[inc[e] >> 1].rolling;
         }
       }
-      rows_[p] = LoadRow{{f.x(), f.y(), f.z(), 0.0}, {t.x(), t.y(), t.z(), 0.0}};
+      a.rows[p] = LoadRow{{f.x(), f.y(), f.z(), 0.0}, {t.x(), t.y(), t.z(), 0.0}};
     }
   }
 
@@ -270,23 +279,28 @@ public:
   /// (four bodies at a time in vectors: ParticleSweepKernel.h).
   void pass_b_bodies()
   {
+    const Arrays a = arrays();
+    const ClosingKickArgs closing = closing_;
+    const double kick_dt = kick_dt_;
+    const std::size_t n = n_;
+    double* const kick_losses = pass_.kick_losses_.data();
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < std::int64_t(nb_particles_); ++b) {
       double kick_loss = 0.0;
-      const std::size_t p_end = std::min(n_, std::size_t(b + 1) * kBlock);
+      const std::size_t p_end = std::min(n, std::size_t(b + 1) * kBlock);
       for (std::size_t p = std::size_t(b) * kBlock; p < p_end; ++p) {
-        if (closing_.rows && p + 4 <= p_end) {
-          for (std::size_t q = p; q < p + 4; ++q) add_wall_loads(q);
-          close_and_kick4(closing_, p);
+        if (closing.rows && p + 4 <= p_end) {
+          for (std::size_t q = p; q < p + 4; ++q) add_wall_loads(a, q);
+          close_and_kick4(closing, p);
           p += 3;
           continue;
         }
-        add_wall_loads(p);
-        store_.force[p] = Vec3(rows_[p].f[0], rows_[p].f[1], rows_[p].f[2]);
-        store_.torque[p] = Vec3(rows_[p].t[0], rows_[p].t[1], rows_[p].t[2]);
-        if (kick_dt_ > 0.0) kick_loss += in_.integrator.kick_particle(store_, p, kick_dt_);
+        add_wall_loads(a, p);
+        a.force[p] = Vec3(a.rows[p].f[0], a.rows[p].f[1], a.rows[p].f[2]);
+        a.torque[p] = Vec3(a.rows[p].t[0], a.rows[p].t[1], a.rows[p].t[2]);
+        if (kick_dt > 0.0) kick_loss += in_.integrator.kick_particle(store_, p, kick_dt);
       }
-      pass_.kick_losses_[b] = kick_loss;
+      kick_losses[b] = kick_loss;
     }
   }
 
@@ -297,33 +311,56 @@ public:
     double kick_loss = 0.0;
     for (std::size_t b = 0; b < nb_particles_; ++b) kick_loss += pass_.kick_losses_[b];
     if constexpr (Track) in_.energy.add_contact_blocks(nbp_ + nbw_);
-    in_.walls.sum_records<Law::has_rolling>(in_.lists);
+    in_.walls.sum_records<Law::has_rolling>(lists_);
     return kick_loss;
   }
 
 private:
+  /// The arrays the loops read and write, bound in each stage's locals (as the lambdas'
+  /// captures were): members of this object would be read again after every call out of
+  /// line (the kernels).
+  struct Arrays
+  {
+    const std::vector<Vec3>&x, &v, &w;
+    const std::vector<double>&R, &im, &mass;
+    std::vector<Vec3>&force, &torque;
+    std::vector<PairSlot>& pairs;
+    std::vector<WallSlot>& wslots;
+    std::vector<SlotLoad>&loads, &wloads;
+    std::vector<ContactMemory>&pmem, &wmem;
+    const std::vector<std::uint32_t>& woff;  // each body's wall slots: [woff[p], woff[p + 1])
+    LoadRow* rows;
+  };
+  Arrays arrays() const
+  {
+    return Arrays{store_.x,           store_.v,          store_.omega,       store_.radius,
+                  store_.inv_mass,    store_.mass,       store_.force,       store_.torque,
+                  lists_.pairs,       lists_.walls,      lists_.pair_loads,  lists_.wall_loads,
+                  lists_.pair_memory, lists_.wall_memory, lists_.wall_offset, rows_};
+  }
+
   /// The scalar path's loads of slot c into the bodies' rows (the kernel adds its own),
   /// kept beside the slot when recording, when a body is shared (pass B1 gathers those) or
   /// when `keep` (the zeros of a slot that came apart).
-  GEOCOMP_CONTACT_KERNEL void scatter_pair(std::size_t c, int wk, const SlotLoad& load, bool keep)
+  GEOCOMP_CONTACT_KERNEL void scatter_pair(const Arrays& a, std::size_t c, int wk, const SlotLoad& load, bool keep)
   {
-    const PairSlot& s = pairs_[c];
+    const PairSlot& s = a.pairs[c];
     const std::uint32_t ri = scatter_.row_of(s.i, wk), rj = scatter_.row_of(s.j, wk);
-    scatter_.add_pair(ri, rj, load, s.overlap, R_[s.i], R_[s.j]);
-    if constexpr (Law::has_rolling) scatter_.add_rolling(ri, rj, pmem_[c].rolling);
-    if (keep || record_ || scatter_.shared(s.i) || scatter_.shared(s.j)) loads_[c] = load;
+    scatter_.add_pair(ri, rj, load, s.overlap, a.R[s.i], a.R[s.j]);
+    if constexpr (Law::has_rolling) scatter_.add_rolling(ri, rj, a.pmem[c].rolling);
+    if (keep || record_ || scatter_.shared(s.i) || scatter_.shared(s.j)) a.loads[c] = load;
   }
 
   /// Pair slot c on the scalar path (worker wk).
-  GEOCOMP_CONTACT_KERNEL void pair_slot(std::size_t c, int wk, BlockLosses& lost)
+  GEOCOMP_CONTACT_KERNEL void pair_slot(const Arrays& a, std::size_t c, int wk, BlockLosses& lost)
   {
-    PairSlot& s = pairs_[c];
+    PairSlot& s = a.pairs[c];
     const Index i = s.i, j = s.j;
-    const Vec3 d = x_[j] - x_[i];
+    const Vec3 d = a.x[j] - a.x[i];
     const double r2 = d.squaredNorm();
-    const double rs = R_[i] + R_[j];
+    const double rs = a.R[i] + a.R[j];
     double range = rs;
-    if constexpr (Law::has_cohesion) range += law_.reach(R_[i] * R_[j] / rs);
+    if constexpr (Law::has_cohesion) range += law_.reach(a.R[i] * a.R[j] / rs);
     if (r2 >= range * range || r2 == 0.0) {
       // Apart: the slot and its load hold zeros (written only when it did not already).
       const bool came_apart = s.overlap != 0.0 || s.shear.squaredNorm() != 0.0;
@@ -331,76 +368,75 @@ private:
         s.overlap = 0.0;
         s.shear.setZero();
       }
-      if constexpr (Law::has_memory) separate(pmem_[c]);
-      scatter_pair(c, wk, SlotLoad{}, came_apart);
+      if constexpr (Law::has_memory) separate(a.pmem[c]);
+      scatter_pair(a, c, wk, SlotLoad{}, came_apart);
       return;
     }
     ContactKinematics k;
-    sphere_sphere_kinematics(k, d, std::sqrt(r2), R_[i], R_[j], v_[i], v_[j], w_[i], w_[j], im_[i], im_[j]);
+    sphere_sphere_kinematics(k, d, std::sqrt(r2), a.R[i], a.R[j], a.v[i], a.v[j], a.w[i], a.w[j], a.im[i], a.im[j]);
     k.overlap_old = s.overlap;
     k.dt = dt_h_;
     k.mu = mu_;
     ContactForce f;
     if constexpr (Law::has_memory) {
-      if constexpr (Law::has_rolling) k.w_rel = w_[j] - w_[i];
-      f = law_.evaluate(k, s.shear, pmem_[c]);
+      if constexpr (Law::has_rolling) k.w_rel = a.w[j] - a.w[i];
+      f = law_.evaluate(k, s.shear, a.pmem[c]);
     } else {
       f = law_.evaluate(k, s.shear);
     }
-    scatter_pair(c, wk, store_contact(s, k, f), false);
+    scatter_pair(a, c, wk, store_contact(s, k, f), false);
     if constexpr (Track) lost.add(f);
   }
 
   /// Wall slot c on the scalar path.
-  GEOCOMP_CONTACT_KERNEL void wall_slot(std::size_t c, BlockLosses& lost)
+  GEOCOMP_CONTACT_KERNEL void wall_slot(const Arrays& a, std::size_t c, BlockLosses& lost)
   {
-    WallSlot& s = wslots_[c];
+    WallSlot& s = a.wslots[c];
     const PlaneWall& wall = in_.walls[s.wall];
     const Index p = s.particle;
     Vec3 n_w;
-    const double h = wall.gap(x_[p], n_w);  // plane distance for unbounded walls
-    double range = R_[p];
-    if constexpr (Law::has_cohesion) range += in_.wall_bonding ? law_.reach(R_[p]) : 0.0;
+    const double h = wall.gap(a.x[p], n_w);  // plane distance for unbounded walls
+    double range = a.R[p];
+    if constexpr (Law::has_cohesion) range += in_.wall_bonding ? law_.reach(a.R[p]) : 0.0;
     if (h >= range) {
       s.overlap = 0.0;
       s.shear.setZero();
-      wloads_[c] = SlotLoad{};
-      if constexpr (Law::has_memory) separate(wmem_[c]);
-      in_.walls.record_term(law_, store_, in_.lists, c, n_w);
+      a.wloads[c] = SlotLoad{};
+      if constexpr (Law::has_memory) separate(a.wmem[c]);
+      in_.walls.record_term(law_, store_, lists_, c, n_w);
       return;
     }
     ContactKinematics k;
-    sphere_wall_kinematics(k, n_w, h, R_[p], v_[p], w_[p], wall.velocity, im_[p]);
+    sphere_wall_kinematics(k, n_w, h, a.R[p], a.v[p], a.w[p], wall.velocity, a.im[p]);
     k.overlap_old = s.overlap;
     k.dt = dt_h_;
     k.mu = wall.mu;
     ContactForce f;
     if constexpr (Law::has_memory) {
-      if constexpr (Law::has_rolling) k.w_rel = w_[p];  // the wall does not spin
+      if constexpr (Law::has_rolling) k.w_rel = a.w[p];  // the wall does not spin
       k.bonding = in_.wall_bonding;
-      f = law_.evaluate(k, s.shear, wmem_[c]);
+      f = law_.evaluate(k, s.shear, a.wmem[c]);
     } else {
       f = law_.evaluate(k, s.shear);
     }
-    wloads_[c] = store_contact(s, k, f);
+    a.wloads[c] = store_contact(s, k, f);
     if constexpr (Track) lost.add(f);
-    in_.walls.record_term(law_, store_, in_.lists, c, n_w);
+    in_.walls.record_term(law_, store_, lists_, c, n_w);
   }
 
   /// Body p's wall slots' loads into its row, in slot order.
-  GEOCOMP_CONTACT_KERNEL void add_wall_loads(std::size_t p)
+  GEOCOMP_CONTACT_KERNEL static void add_wall_loads(const Arrays& a, std::size_t p)
   {
-    const auto& woff = in_.lists.wall_offset;
-    if (woff[p] == woff[p + 1]) return;
-    const double Rp = R_[p];
-    Vec3 f(rows_[p].f[0], rows_[p].f[1], rows_[p].f[2]);
-    Vec3 t(rows_[p].t[0], rows_[p].t[1], rows_[p].t[2]);
-    for (std::uint32_t e = woff[p]; e < woff[p + 1]; ++e) {
-      f += wloads_[e].force;
-      t -= (Rp - 0.5 * wslots_[e].overlap) * wloads_[e].lever;
-      if constexpr (Law::has_rolling) t += wmem_[e].rolling;
+    if (a.woff[p] == a.woff[p + 1]) return;
+    const double Rp = a.R[p];
+    Vec3 f(a.rows[p].f[0], a.rows[p].f[1], a.rows[p].f[2]);
+    Vec3 t(a.rows[p].t[0], a.rows[p].t[1], a.rows[p].t[2]);
+    for (std::uint32_t e = a.woff[p]; e < a.woff[p + 1]; ++e) {
+      f += a.wloads[e].force;
+      t -= (Rp - 0.5 * a.wslots[e].overlap) * a.wloads[e].lever;
+      if constexpr (Law::has_rolling) t += a.wmem[e].rolling;
     }
-    rows_[p] = LoadRow{{f.x(), f.y(), f.z(), 0.0}, {t.x(), t.y(), t.z(), 0.0}};
+    a.rows[p] = LoadRow{{f.x(), f.y(), f.z(), 0.0}, {t.x(), t.y(), t.z(), 0.0}};
   }
 
   ContactPass& pass_;
@@ -409,22 +445,12 @@ private:
   const double dt_h_, kick_dt_;
   const bool record_;
   ParticleStore& store_;
-  const std::vector<Vec3>& x_;
-  const std::vector<Vec3>& v_;
-  const std::vector<Vec3>& w_;
-  const std::vector<double>& R_;
-  const std::vector<double>& im_;
-  std::vector<PairSlot>& pairs_;
-  std::vector<WallSlot>& wslots_;
-  std::vector<SlotLoad>& loads_;
-  std::vector<SlotLoad>& wloads_;
-  std::vector<ContactMemory>& pmem_;
-  std::vector<ContactMemory>& wmem_;
+  ContactLists& lists_;
   LoadScatter& scatter_;
   const std::size_t n_, nbp_, nbw_, nb_particles_;
   const double mu_;
   const Vec3 g_;
-  const int workers_ = in_.threads;  // the scatter's workers: one range of pair blocks each
+  const int workers_;  // the scatter's workers: one range of pair blocks each
   bool batched_ = false;
   PairBatchArgs batch_;
   PairBatchArgs wall_batch_;

@@ -26,12 +26,11 @@ ParticleId DemSystem::add_sphere(const Vec3& x, double radius, double density, c
 {
   if (!(density > 0.0)) throw std::invalid_argument("DemSystem::add_sphere: density must be positive");
   if (!x.allFinite()) throw std::invalid_argument("DemSystem::add_sphere: non-finite position");
-  const ParticleId id = ParticleId(index_of_.size());
   const double mass = 4.0 / 3.0 * M_PI * radius * radius * radius * density;
-  const Index k = store_.add_sphere(id, x, radius, mass);
+  const ParticleId id = index_of_.add_sphere(store_, x, radius, mass);
+  const Index k = index_of_[id];
   store_.v[k] = v;
   store_.omega[k] = omega;
-  index_of_.push_back(k);
   rebuild_requested_ = true;
   invalidate();
   return id;
@@ -77,7 +76,7 @@ void DemSystem::set_radii(const std::vector<double>& radii)
   double growth = 0.0;
   if (!clumps_.empty()) throw std::logic_error("DemSystem::set_radii: not available with clumps");
   for (ParticleId id = 0; id < radii.size(); ++id)
-    if (index_of_[id] != kNoIndex) growth = std::max(growth, change_radius(store_, index_of_[id], radii[id]));
+    if (index_of_.alive(id)) growth = std::max(growth, change_radius(store_, index_of_[id], radii[id]));
   radius_growth_ += growth;  // a bound on each particle's increase since the build
   invalidate();
 }
@@ -205,7 +204,7 @@ double DemSystem::critical_time_step() const
 
 void DemSystem::refresh_index()
 {
-  for (Index k = 0; k < store_.size(); ++k) index_of_[store_.id[k]] = k;
+  index_of_.refresh(store_);
 }
 
 void DemSystem::set_prefetch(Prefetch p)
@@ -549,7 +548,7 @@ void DemSystem::write_state(std::ostream& out) const
   binary::put_vector(out, p.id);
   binary::put_vector(out, p.body);
   binary::put_vector(out, p.flags);
-  binary::put_vector(out, index_of_);
+  binary::put_vector(out, index_of_.map());
   binary::put_vector(out, walls_.planes());
   binary::put(out, mu_);
   search_.write_state(out);
@@ -618,7 +617,7 @@ void DemSystem::read_state(std::istream& in)
                         p.radius.size(), p.mass.size(), p.inv_mass.size(), p.inv_inertia.size(), p.id.size(),
                         p.body.size(), p.flags.size()})
     if (a != n) throw binary::StateError("checkpoint: particle arrays of different lengths");
-  binary::get_vector(in, index_of_);
+  binary::get_vector(in, index_of_.map());
   {  // walls: this layout, or the one before bounded walls (legacy::PlaneWallV3, unbounded)
     std::uint64_t n = 0, size = 0;
     binary::get(in, n);
@@ -701,7 +700,7 @@ void DemSystem::read_state(std::istream& in)
 
 std::size_t DemSystem::memory_bytes() const
 {
-  return store_.memory_bytes() + index_of_.capacity() * sizeof(Index) + lists_.memory_bytes() +
+  return store_.memory_bytes() + index_of_.memory_bytes() + lists_.memory_bytes() +
          search_.memory_bytes() + integrator_.memory_bytes() + energy_.memory_bytes() + walls_.memory_bytes() +
          contact_pass_.memory_bytes() + clumps_.memory_bytes();
 }

@@ -20,6 +20,18 @@
 // The law is a `ContactModel` (std::variant); the step dispatches on it once, and the
 // contact loop is compiled for the concrete law.
 //
+// Structure: this class is the facade; each concept lives in a component of its own,
+// held by value (no back-references, so a DemSystem copies like its parts):
+//   ParticleStore + ParticleIndex  the particles (structure of arrays) and id -> index;
+//   WallSet                        the walls, their packing for the batched kernel, records, work;
+//   NeighbourSearch, ContactLists  the Verlet lists and the contact slots (histories);
+//   ContactPass                    pass A / pass B over the slots, the law dispatch;
+//   Integrator                     kicks, drifts, first-order dynamics, FIRE;
+//   EnergyAccounting               the dissipated energy (fixed blocks) and the ledger;
+//   ClumpSet                       rigid clumps (DemSystemClumps.cpp).
+// step() reads as the scheme above: advance_positions() (1, 2), the walls move, the lists
+// are rebuilt if needed, close_step() (3, 4), the walls' work.
+//
 // Walls: `add_box()` adds six inward-facing planes (x-, x+, y-, y+, z-, z+), each with its
 // own velocity (`set_wall_velocity`, any time) and friction mu_p; after each step
 // `wall(k)` holds the force the particles exert on it, its torque, contact count,
@@ -48,6 +60,7 @@
 #include "dem/Fragment.h"
 #include "dem/NeighbourSearch.h"
 #include "dem/PairBatchKernel.h"
+#include "dem/ParticleIndex.h"
 #include "dem/ParticleSweepKernel.h"
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
@@ -98,7 +111,7 @@ public:
   /// One past the largest id handed out (ids of removed particles included).
   std::size_t id_bound() const { return index_of_.size(); }
   /// False for an id whose sphere was replaced by fragments (replace_spheres).
-  bool alive(ParticleId id) const { return id < index_of_.size() && index_of_[id] != kNoIndex; }
+  bool alive(ParticleId id) const { return index_of_.alive(id); }
   /// Reserves storage for n particles (avoids over-allocation when adding many).
   void reserve(std::size_t n) { store_.reserve(n); index_of_.reserve(n); }
   /// Current storage index of a particle id.
@@ -314,7 +327,7 @@ private:
 
   // The components (one concept each; docs/dem.md, the engine's structure).
   ParticleStore store_;           // the particles, structure of arrays
-  std::vector<Index> index_of_;   // particle id -> storage index (kNoIndex: removed)
+  ParticleIndex index_of_;        // particle id -> storage index, with add and remove
   WallSet walls_;                 // the walls and their records
   ContactModel model_;
   double mu_ = 0.0;

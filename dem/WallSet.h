@@ -95,7 +95,7 @@ private:
 };
 
 template <class Law>
-GEOCOMP_CONTACT_KERNEL void WallSet::record_term(const Law& law, const ParticleStore& store, const ContactLists& lists,
+inline void WallSet::record_term(const Law& law, const ParticleStore& store, const ContactLists& lists,
                                                  std::size_t c, const Vec3& n_w)
 {
   const WallSlot& s = lists.walls[c];
