@@ -20,6 +20,18 @@
 // The law is a `ContactModel` (std::variant); the step dispatches on it once, and the
 // contact loop is compiled for the concrete law.
 //
+// Structure: this class is the facade; each concept lives in a component of its own,
+// held by value (no back-references, so a DemSystem copies like its parts):
+//   ParticleStore + ParticleIndex  the particles (structure of arrays) and id -> index;
+//   WallSet                        the walls, their packing for the batched kernel, records, work;
+//   NeighbourSearch, ContactLists  the Verlet lists and the contact slots (histories);
+//   ContactPass                    pass A / pass B over the slots, the law dispatch;
+//   Integrator                     kicks, drifts, first-order dynamics, FIRE;
+//   EnergyAccounting               the dissipated energy (fixed blocks) and the ledger;
+//   ClumpSet                       rigid clumps (DemSystemClumps.cpp).
+// step() reads as the scheme above: advance_positions() (1, 2), the walls move, the lists
+// are rebuilt if needed, close_step() (3, 4), the walls' work.
+//
 // Walls: `add_box()` adds six inward-facing planes (x-, x+, y-, y+, z-, z+), each with its
 // own velocity (`set_wall_velocity`, any time) and friction mu_p; after each step
 // `wall(k)` holds the force the particles exert on it, its torque, contact count,
@@ -38,16 +50,21 @@
 #pragma once
 
 #include "dem/ClumpSet.h"
+#include "dem/ContactPass.h"
 #include "dem/ContactLaw.h"
 #include "dem/ContactLists.h"
 #include "dem/LoadScatter.h"
+#include "dem/EnergyAccounting.h"
 #include "dem/EnergyLedger.h"
+#include "dem/Integrator.h"
 #include "dem/Fragment.h"
 #include "dem/NeighbourSearch.h"
 #include "dem/PairBatchKernel.h"
+#include "dem/ParticleIndex.h"
 #include "dem/ParticleSweepKernel.h"
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
+#include "dem/WallSet.h"
 
 #include <cstdint>
 #include <iosfwd>
@@ -94,7 +111,7 @@ public:
   /// One past the largest id handed out (ids of removed particles included).
   std::size_t id_bound() const { return index_of_.size(); }
   /// False for an id whose sphere was replaced by fragments (replace_spheres).
-  bool alive(ParticleId id) const { return id < index_of_.size() && index_of_[id] != kNoIndex; }
+  bool alive(ParticleId id) const { return index_of_.alive(id); }
   /// Reserves storage for n particles (avoids over-allocation when adding many).
   void reserve(std::size_t n) { store_.reserve(n); index_of_.reserve(n); }
   /// Current storage index of a particle id.
@@ -190,15 +207,15 @@ public:
   int num_threads() const { return threads_; }
   void set_gravity(const Vec3& g) { gravity_ = g; invalidate(); }
   /// Cundall local damping coefficient lambda_d (0: off, default).
-  void set_local_damping(double lambda) { local_damping_ = lambda; }
-  double local_damping_coefficient() const { return local_damping_; }
+  void set_local_damping(double lambda) { integrator_.set_local_damping(lambda); }
+  double local_damping_coefficient() const { return integrator_.local_damping(); }
   /// First-order ("Aristotelian", S0 packing; Klishin & Mikenina 2021) dynamics when
   /// beta > 0: each step sets $v = \beta\,\Delta t\,F/m$, $\omega = \beta\,\Delta t\,T/I$ and drifts
   /// $x \mathrel{+}= \Delta t\,v$ (overdamped, no inertia: explicit steepest descent, stable for
   /// $\beta\,\Delta t^2 k_{eff}/m < 2$). Local damping does not apply; the power $F\cdot v + T\cdot\omega$
   /// is counted as dissipated_local. beta = 0 (default): velocity Verlet.
   void set_overdamped(double beta);
-  double overdamped() const { return overdamped_; }
+  double overdamped() const { return integrator_.overdamped(); }
   /// FIRE (Bitzek et al. 2006, DEM-NOTES section 8), the velocity part, over the dynamic
   /// particles: the power $P = \sum F\cdot v + T\cdot\omega$ (summed in storage order); if
   /// P > 0, $v \leftarrow (1-\alpha)v + \alpha|v|\hat F$ with global norms (the same for
@@ -214,7 +231,7 @@ public:
   bool batched_pairs() const { return batched_pairs_ && pair_batch_kernel_available(); }
   /// The kick and drift sweeps four spheres at a time: batched, and no local damping
   /// (the vector sweeps have none).
-  bool batched_sweeps() const { return batched_pairs() && local_damping_ == 0.0 && kick_drift_kernel_available(); }
+  bool batched_sweeps() const { return batched_pairs() && integrator_.local_damping() == 0.0 && kick_drift_kernel_available(); }
   /// Software prefetch in the batched pair kernel (the slots 24 ahead of the test, the
   /// j bodies' position, velocities and load row 12 ahead). It saves about a seventh
   /// of the step when the particles and lists outgrow the last-level cache (100 000
@@ -285,28 +302,19 @@ private:
   void invalidate() { ready_ = false; }
   void prepare();
   void rebuild();
-  /// The contact forces at the current positions; with `kick_dt` > 0 pass B also gives
-  /// each particle the step's closing half kick (step 4) as soon as its load is summed, and
-  /// the return value is that kick's local damping loss (0 otherwise). `record`: every
-  /// pair slot's load is kept (ContactLists::pair_loads), so contacts() may read them.
+  /// The contact forces at the current positions (ContactPass); with `kick_dt` > 0 pass B
+  /// also gives each particle the step's closing half kick (step 4) as soon as its load is
+  /// summed, and the return value is that kick's local damping loss (0 otherwise).
+  /// `record`: every pair slot's load is kept (ContactLists::pair_loads), so contacts()
+  /// may read them.
   double compute_forces(double dt_history, double kick_dt = 0.0, bool record = true);
-  template <class Law, bool Track>
-  double compute_forces_with(const Law& law, double dt_history, double kick_dt, bool record);
-  /// Half a kick of particle p with its current load; returns the local damping loss.
-  double kick_particle(std::size_t p, double dt);
-  /// body(p, sum, max) over all particles in the fixed reduction blocks, statically split
-  /// among the threads; returns the blocks' sums and maxima combined in block order.
-  template <class Body>
-  std::pair<double, double> sweep_particles(Body body);
-  /// The same blocks, the body called once per block: body(begin, end, sum, max).
-  template <class BlockBody>
-  std::pair<double, double> sweep_blocks(BlockBody body);
-  double kick(double dt);
-  double kick_drift(double dt);
-  double drift_overdamped(double dt);
-  /// The drift of particle p over dt with its current velocities (position, orientation);
-  /// returns its squared displacement since the last neighbour build.
-  double drift_particle(std::size_t p, double dt);
+  /// The particles the integrator sweeps over, and what their drift compares against.
+  SweepTarget sweep_target() { return SweepTarget{store_, search_.reference_positions(), threads_}; }
+  /// The step's opening half kick and drift (or the first-order drift), particles and
+  /// clumps; returns the largest squared displacement since the last neighbour build.
+  double advance_positions();
+  /// The step's forces at the new positions and its closing half kick.
+  void close_step(bool record);
   void refresh_index();
   bool law_has_memory() const;
   double law_reach() const;
@@ -317,21 +325,24 @@ private:
   void place_members(std::size_t c, bool positions);
   void gather_clump_loads();
 
-  ParticleStore store_;
-  std::vector<Index> index_of_;
-  std::vector<PlaneWall> walls_;
+  // The components (one concept each; docs/dem.md, the engine's structure).
+  ParticleStore store_;           // the particles, structure of arrays
+  ParticleIndex index_of_;        // particle id -> storage index, with add and remove
+  WallSet walls_;                 // the walls and their records
   ContactModel model_;
   double mu_ = 0.0;
   bool wall_bonding_ = false;
   ClumpSet clumps_;
   NeighbourSearch search_;
   ContactLists lists_;
-  LoadScatter scatter_;
+  ContactPass contact_pass_;      // pass A / pass B and the law dispatch
+  Integrator integrator_;         // kicks, drifts, first-order dynamics, FIRE
+  EnergyAccounting energy_;       // the dissipated energy and the ledger
 
+  // Settings and state of the step.
   double dt_ = 0.0;
   int threads_ = 1;
   Vec3 gravity_ = Vec3::Zero();
-  double local_damping_ = 0.0;
   bool track_energy_ = false;
   bool batched_pairs_ = true;
   Prefetch prefetch_mode_ = Prefetch::automatic;
@@ -341,28 +352,11 @@ private:
   ContactForceRecording recording_ = ContactForceRecording::every_step;
   bool record_requested_ = false;  // record_contact_forces() before the next step
   bool loads_current_ = true;      // the last force evaluation kept every pair slot's load
-  double overdamped_ = 0.0;      // beta of first-order dynamics (0: Newtonian)
   double radius_growth_ = 0.0;   // bound on any radius increase since the last build
   double moved2_ = 0.0;          // largest squared displacement since the last build (last step)
 
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
-  EnergyLedger losses_{};             // dissipated_* and wall_work accumulate here
-  std::vector<double> block_losses_;  // per fixed-size block, summed in order
-  std::vector<double> kick_losses_;   // the fused closing kick's, per particle block
-  /// A wall slot's terms of its wall's record, computed in pass A (in parallel) and summed
-  /// in slot order afterwards (the same bits as summing them there).
-  struct WallTerm
-  {
-    Vec3 torque = Vec3::Zero();  ///< (x_c - wall point) x (-F)
-    double stiffness = 0.0;      ///< k_n of the contact (touching only)
-    bool recorded = false, touching = false;
-  };
-  std::vector<WallTerm> wall_terms_;  // one per wall slot
-  std::vector<PackedBody> packed_position_radius_;    // the batched pair kernel's copies,
-  std::vector<PackedBody> packed_velocity_inv_mass_;  // packed before each pass A
-  std::vector<double> wall_arrays_;   // the walls as the batched kernel reads them
-  std::vector<Vec3> wall_force_old_;
 };
 
 }  // namespace geocomp::dem

@@ -72,9 +72,7 @@ std::vector<ParticleId> DemSystem::replace_spheres(const std::vector<Replacement
     // A sheltered parent passes its group on: its children overlap its former siblings.
     const std::int32_t inherited = store_.body[k];
     const std::int32_t tag = inherited <= kFirstSiblingGroup ? inherited : group;
-    store_.remove(k);
-    index_of_[r.parent] = kNoIndex;
-    if (k < store_.size()) index_of_[store_.id[k]] = k;
+    index_of_.remove(store_, r.parent);
 
     double m_sum = 0.0;
     Vec3 xg = Vec3::Zero();
@@ -85,14 +83,13 @@ std::vector<ParticleId> DemSystem::replace_spheres(const std::vector<Replacement
     }
     xg /= m_sum;
     for (const Fragment& f : r.children) {
-      const ParticleId id = ParticleId(index_of_.size());
       const double m = 4.0 / 3.0 * M_PI * f.radius * f.radius * f.radius * f.density;
-      const Index c = store_.add_sphere(id, f.centre, f.radius, m);
+      const ParticleId id = index_of_.add_sphere(store_, f.centre, f.radius, m);
+      const Index c = index_of_[id];
       store_.v[c] = v + w.cross(f.centre - xg);
       store_.omega[c] = w;
       store_.orientation[c] = q;
       if (shelter_siblings && (r.children.size() > 1 || tag == inherited)) store_.body[c] = tag;
-      index_of_.push_back(c);
       new_ids.push_back(id);
     }
     if (shelter_siblings && tag == group) --group;

@@ -91,9 +91,10 @@ void DemSystem::gather_clump_loads()
 void DemSystem::kick_clump(std::size_t c, double dt, double& loss)
 {
   Vec3 f = clumps_.force[c], t = clumps_.torque[c];
-  if (local_damping_ > 0.0) {
-    loss += 0.5 * dt * local_damping(f, clumps_.v[c], local_damping_);
-    loss += 0.5 * dt * local_damping(t, clumps_.angular_velocity(c), local_damping_);
+  const double lambda = integrator_.local_damping();
+  if (lambda > 0.0) {
+    loss += 0.5 * dt * local_damping(f, clumps_.v[c], lambda);
+    loss += 0.5 * dt * local_damping(t, clumps_.angular_velocity(c), lambda);
   }
   clumps_.kick(c, 0.5 * dt, f, t);
 }
@@ -112,7 +113,7 @@ double DemSystem::kick_drift_clumps(double dt)
         max_d2 = std::max(max_d2, (store_.x[k] - x_ref[k]).squaredNorm());
       }
   }
-  losses_.dissipated_local += loss;
+  energy_.add_local(loss);
   return max_d2;
 }
 
@@ -123,7 +124,7 @@ void DemSystem::kick_clumps(double dt)
     kick_clump(c, dt, loss);
     place_members(c, false);
   }
-  losses_.dissipated_local += loss;
+  energy_.add_local(loss);
 }
 
 }  // namespace geocomp::dem
