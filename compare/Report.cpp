@@ -1,6 +1,7 @@
 #include "compare/Report.h"
 
 #include "common/Subprocess.h"
+#include "compare/GnuplotString.h"
 #include "compare/JsonString.h"
 
 #include <algorithm>
@@ -149,12 +150,11 @@ std::string onset_lines(const ReportInput &in)
   for (const OnsetEstimate &o : onsets) {
     if (!o.found || !std::isfinite(o.strain))
       continue;
-    std::string source = o.source;
-    std::replace(source.begin(), source.end(), '\'', '`');
     const std::string x = format_number(o.strain * 100.0);
     ++n;
     g << "set arrow " << n << " from " << x << ", graph 0 to " << x << ", graph 1 nohead dt 3 lw 1.5 lc rgb '#555555'\n"
-      << "set label " << n << " 'onset: " << source << "' at " << x << ", graph 0.03 rotate by 90 left offset -0.8, 0"
+      << "set label " << n << " " << gnuplot_quoted("onset: " + o.source) << " at " << x
+      << ", graph 0.03 rotate by 90 left offset -0.8, 0"
       << " font ',10' tc rgb '#555555'\n";
   }
   return g.str();
@@ -270,11 +270,7 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
       d << map.x[i] << ' ' << map.z[i] << ' ' << map.u[i] * map.scale << '\n';
     const std::string name = "map" + std::to_string(m);
     write_text(dir / "data" / (name + ".dat"), d.str());
-    std::string title = map.title;
-    for (auto &ch : title)
-      if (ch == '\'')
-        ch = '`';
-    gp << "\nset output '" << name << ".png'\nset title '" << title << "'\nset size ratio -1\nunset key\n"
+    gp << "\nset output '" << name << ".png'\nset title " << gnuplot_quoted(map.title) << "\nset size ratio -1\nunset key\n"
        << "set xlabel 'x [m]'\nset ylabel 'z [m]'\nset cblabel '" << map.component << " [" << map.unit << "]'\n"
        << "set palette defined (0 '#313695', 1 '#74add1', 2 '#ffffbf', 3 '#f46d43', 4 '#a50026')\n"
        << colour_range(map) << "plot 'data/" << name << ".dat' using 1:2:3 with points pt 5 ps 0.9 palette\n"
