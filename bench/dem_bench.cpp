@@ -14,13 +14,26 @@
 #include "bench/BenchLaw.h"
 #include "dem/specimen/Packing.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <string>
 
 using namespace geocomp::dem;
+
+namespace {
+/// The process's peak resident memory (Linux: VmHWM in /proc/self/status), 0 elsewhere.
+double peak_resident_mb()
+{
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
+  return 0.0;
+}
+}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -66,6 +79,10 @@ int main(int argc, char** argv)
     sys.set_contact_force_recording(DemSystem::ContactForceRecording::on_request);
 
   sys.run(std::size_t(n_eq));
+  // GEOCOMP_PROFILE=1: the timed steps' seconds per phase (StepProfile.h) on a line
+  // before the result; the pair stage then ends at a barrier of its own.
+  StepProfile profile;
+  if (const char* e = std::getenv("GEOCOMP_PROFILE"); e && std::string(e) == "1") sys.set_profile(&profile);
   const std::size_t rebuilds0 = sys.n_rebuilds();
   const auto t0 = std::chrono::steady_clock::now();
   sys.run(std::size_t(n_timed));
@@ -77,7 +94,21 @@ int main(int argc, char** argv)
   std::printf("geocomp N=%zu threads=%d rebuilds_timed=%zu listed_pairs/particle=%.2f coordination=%.3f KE=%.17g J batched=%d prefetch=%d\n",
               n, threads, sys.n_rebuilds() - rebuilds0, double(sys.contact_lists().pairs.size()) / double(n), z_mean,
               e.kinetic(), sys.batched_pairs() ? 1 : 0, sys.prefetching() ? 1 : 0);
-  std::printf("geocomp N=%zu threads=%d bytes/particle: %.0f\n", n, threads, double(sys.memory_bytes()) / double(n));
+  std::printf("geocomp N=%zu threads=%d bytes/particle: %.0f peak_resident_MB: %.0f\n", n, threads,
+              double(sys.memory_bytes()) / double(n), peak_resident_mb());
+  if (profile.steps > 0) {
+    std::printf("geocomp N=%zu threads=%d profile us/step:", n, threads);
+    for (std::size_t k = 0; k < StepProfile::n_phases; ++k)
+      std::printf(" %s=%.1f", StepProfile::names[k], 1e6 * profile.seconds[k] / double(profile.steps));
+    double busy_max = 0.0, busy_sum = 0.0;
+    for (double b : profile.pair_busy) {
+      busy_max = std::max(busy_max, b);
+      busy_sum += b;
+    }
+    const double busy_mean = profile.pair_busy.empty() ? 0.0 : busy_sum / double(profile.pair_busy.size());
+    std::printf(" pair_busy_max/mean=%.3f shared_bodies=%zu\n", busy_mean > 0.0 ? busy_max / busy_mean : 0.0,
+                profile.shared_bodies);
+  }
   std::printf("geocomp N=%zu threads=%d steps=%ld seconds=%.3f ns/particle-step: %.1f\n", n, threads, n_timed, seconds,
               seconds / double(n_timed) / double(n) * 1e9);
   return 0;

@@ -122,6 +122,7 @@ public:
     if constexpr (Track) in_.energy.begin_contact_blocks(nbp_ + nbw_);
     pass_.kick_losses_.assign(nb_particles_, 0.0);
     in_.walls.resize_terms(lists_.walls.size());
+    pass_.wall_groups_.plan(lists_, in_.walls.size(), in_.list_builds);
     if constexpr (kLinear<Law>) {
       batched_ = in_.batched_pairs && !lists_.pairs.empty() && n_ > 0;
       if (batched_) {
@@ -244,6 +245,17 @@ public:
     }
   }
 
+  /// The walls' records, one wall per thread (no barrier: pass B does not read them).
+  void sum_walls()
+  {
+    const WallGroups& g = pass_.wall_groups_;
+    const std::int64_t n_walls = std::int64_t(in_.walls.size());
+#pragma omp for schedule(static, 1) nowait
+    for (std::int64_t w = 0; w < n_walls; ++w)
+      in_.walls.sum_record<Law::has_rolling>(lists_, std::size_t(w), g.slots.data() + g.offset[w],
+                                              g.offset[w + 1] - g.offset[w]);
+  }
+
   /// Pass B1: the gather of each shared body's incident slots in ascending order, from
   /// its weight, into its row (the shared bodies, one layer of storage, split evenly).
   void pass_b_shared()
@@ -304,14 +316,13 @@ public:
     }
   }
 
-  /// The serial sums, in block and slot order: the closing kick's loss (returned), the
-  /// contacts' dissipation, the walls' records.
+  /// The serial sums, in block order: the closing kick's loss (returned) and the
+  /// contacts' dissipation.
   double finish()
   {
     double kick_loss = 0.0;
     for (std::size_t b = 0; b < nb_particles_; ++b) kick_loss += pass_.kick_losses_[b];
     if constexpr (Track) in_.energy.add_contact_blocks(nbp_ + nbw_);
-    in_.walls.sum_records<Law::has_rolling>(lists_);
     return kick_loss;
   }
 
@@ -476,6 +487,7 @@ double ContactPass::run(const ContactModel& model, const ContactPassInput& in, c
 template <class Law, bool Track>
 double ContactPass::run_with(const Law& law, const ContactPassInput& in, const ForceRequest& request)
 {
+  if (in.profile) return run_profiled<Law, Track>(law, in, request);
   Stages<Law, Track> s(*this, law, in, request);
   s.prepare_batches();
   s.prepare_rows();
@@ -484,15 +496,72 @@ double ContactPass::run_with(const Law& law, const ContactPassInput& in, const F
     s.start_rows();
     s.pass_a_pairs();
     s.pass_a_walls();
+    s.sum_walls();
     s.pass_b_shared();
     s.pass_b_bodies();
   }
   return s.finish();
 }
 
+/// run_with() with each stage timed (StepProfile.h): the master thread marks the end of
+/// every stage after its barrier; the pair stage, which has none, gets one here, and each
+/// thread's time in its pair blocks is kept to show the imbalance.
+template <class Law, bool Track>
+double ContactPass::run_profiled(const Law& law, const ContactPassInput& in, const ForceRequest& request)
+{
+  StepProfile& profile = *in.profile;
+  PhaseClock clock(&profile);
+  if (profile.pair_busy.size() < std::size_t(in.threads)) profile.pair_busy.resize(std::size_t(in.threads), 0.0);
+  Stages<Law, Track> s(*this, law, in, request);
+  s.prepare_batches();
+  s.prepare_rows();
+  profile.shared_bodies = scatter_.shared_bodies().size();
+  clock.mark(StepProfile::setup);
+#pragma omp parallel num_threads(in.threads)
+  {
+#ifdef _OPENMP
+    const bool master = omp_get_thread_num() == 0;
+    double& busy = profile.pair_busy[std::size_t(omp_get_thread_num())];
+#else
+    const bool master = true;
+    double& busy = profile.pair_busy[0];
+#endif
+    s.start_rows();
+    if (master) clock.mark(StepProfile::rows);
+    const double t0 = PhaseClock::now();
+    s.pass_a_pairs();
+    busy += PhaseClock::now() - t0;
+#pragma omp barrier
+    if (master) clock.mark(StepProfile::pairs);
+    s.pass_a_walls();
+    s.sum_walls();
+    if (master) clock.mark(StepProfile::walls);
+    s.pass_b_shared();
+    if (master) clock.mark(StepProfile::shared);
+    s.pass_b_bodies();
+    if (master) clock.mark(StepProfile::bodies);
+  }
+  const double kick_loss = s.finish();
+  clock.mark(StepProfile::finish);
+  return kick_loss;
+}
+
+void ContactPass::WallGroups::plan(const ContactLists& lists, std::size_t n_walls, std::uint64_t build)
+{
+  if (planned && generation == build && offset.size() == n_walls + 1 && slots.size() == lists.walls.size()) return;
+  planned = true;
+  generation = build;
+  offset.assign(n_walls + 1, 0);
+  for (const WallSlot& s : lists.walls) ++offset[s.wall + 1];
+  for (std::size_t w = 0; w < n_walls; ++w) offset[w + 1] += offset[w];
+  slots.resize(lists.walls.size());
+  std::vector<std::uint32_t> at(offset.begin(), offset.end() - 1);
+  for (std::size_t c = 0; c < lists.walls.size(); ++c) slots[at[lists.walls[c].wall]++] = std::uint32_t(c);
+}
+
 std::size_t ContactPass::memory_bytes() const
 {
-  return scatter_.memory_bytes() +
+  return scatter_.memory_bytes() + (wall_groups_.offset.capacity() + wall_groups_.slots.capacity()) * 4 +
          (packed_position_radius_.capacity() + packed_velocity_inv_mass_.capacity()) * sizeof(PackedBody);
 }
 

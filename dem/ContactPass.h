@@ -28,9 +28,11 @@
 #include "dem/LoadScatter.h"
 #include "dem/PairBatchKernel.h"
 #include "dem/ParticleStore.h"
+#include "dem/StepProfile.h"
 #include "dem/WallSet.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace geocomp::dem {
@@ -52,6 +54,7 @@ struct ContactPassInput
   bool batched_sweeps = false;    ///< the closing kick four bodies at a time
   bool prefetch = false;          ///< the pair kernel's software prefetch
   bool track_energy = false;      ///< sum the contacts' dissipation
+  StepProfile* profile = nullptr; ///< times the stages when given (a barrier after the pairs)
 };
 
 /// What one force evaluation is asked to do.
@@ -70,7 +73,11 @@ public:
   /// local damping loss (0 without a kick).
   double run(const ContactModel& model, const ContactPassInput& in, const ForceRequest& request);
   /// The lists changed outside a rebuild (a checkpoint was read): plan the scatter anew.
-  void invalidate() { scatter_.invalidate(); }
+  void invalidate()
+  {
+    scatter_.invalidate();
+    wall_groups_.planned = false;
+  }
   std::size_t memory_bytes() const;
 
 private:
@@ -78,8 +85,21 @@ private:
   class Stages;  // the stages of one evaluation for one law (ContactPass.cpp)
   template <class Law, bool Track>
   double run_with(const Law& law, const ContactPassInput& in, const ForceRequest& request);
+  template <class Law, bool Track>
+  double run_profiled(const Law& law, const ContactPassInput& in, const ForceRequest& request);
+
+  /// The wall slots grouped by wall, each group ascending (a counting sort of the slots),
+  /// made once per list build: each wall's record is summed over its group on one thread.
+  struct WallGroups
+  {
+    bool planned = false;
+    std::uint64_t generation = 0;
+    std::vector<std::uint32_t> offset, slots;  // wall w: slots[offset[w] .. offset[w + 1])
+    void plan(const ContactLists& lists, std::size_t n_walls, std::uint64_t generation);
+  };
 
   LoadScatter scatter_;
+  WallGroups wall_groups_;
   std::vector<PackedBody> packed_position_radius_;    // the batched pair kernel's copies,
   std::vector<PackedBody> packed_velocity_inv_mass_;  // packed before each pass A
   std::vector<double> kick_losses_;                   // the closing kick's, per particle block

@@ -254,21 +254,32 @@ double DemSystem::fire_velocities(double alpha) { return integrator_.fire_veloci
 void DemSystem::step()
 {
   if (!(dt_ > 0.0)) throw std::logic_error("DemSystem::step: time step not set");
+  PhaseClock clock(profile_);
   prepare();
   walls_.remember_forces();
   if (integrator_.overdamped() > 0.0 && !clumps_.empty())
     throw std::logic_error("DemSystem::step: first-order dynamics is not available with clumps");
+  clock.mark(StepProfile::other);
   const double max_d2 = advance_positions();
   moved2_ = max_d2;
+  clock.mark(StepProfile::sweep);
   walls_.move(dt_);
-  if (rebuild_requested_ || search_.needs_rebuild(with_growth(max_d2, radius_growth_), walls_.planes())) rebuild();
+  const bool build = rebuild_requested_ || search_.needs_rebuild(with_growth(max_d2, radius_growth_), walls_.planes());
+  clock.mark(StepProfile::other);
+  if (build) {
+    rebuild();
+    clock.mark(StepProfile::rebuild);
+  }
   // Every contact's load is kept for contacts() at every step, or at the requested ones.
   const bool record = recording_ == ContactForceRecording::every_step || record_requested_;
   record_requested_ = false;
-  close_step(record);
+  close_step(record);  // the contact pass times its own stages
+  clock.restart();
   walls_.add_work(dt_, energy_.losses());
   time_ += dt_;
   ++steps_;
+  clock.mark(StepProfile::other);
+  if (profile_) ++profile_->steps;
 }
 
 double DemSystem::advance_positions()
@@ -311,6 +322,7 @@ double DemSystem::compute_forces(double dt_history, double kick_dt, bool record)
   in.batched_sweeps = batched_sweeps();
   in.prefetch = prefetch_;
   in.track_energy = track_energy_;
+  in.profile = profile_;
   const double kick_loss = contact_pass_.run(model_, in, ForceRequest{dt_history, kick_dt, record});
   loads_current_ = record;
   if (!clumps_.empty()) gather_clump_loads();

@@ -64,6 +64,7 @@
 #include "dem/ParticleSweepKernel.h"
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
+#include "dem/StepProfile.h"
 #include "dem/WallSet.h"
 
 #include <cstdint>
@@ -255,6 +256,9 @@ public:
   void evaluate_forces() { prepare(); }
   void step();
   void run(std::size_t n_steps);
+  /// Accumulate the steps' time per phase into `p` (StepProfile.h; nullptr: off, the
+  /// default). The profile is the caller's and must outlive the steps it times.
+  void set_profile(StepProfile* p) { profile_ = p; }
   double time() const { return time_; }
   std::uint64_t n_steps() const { return steps_; }
   std::size_t n_rebuilds() const { return search_.n_builds(); }
@@ -357,6 +361,7 @@ private:
 
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
+  StepProfile* profile_ = nullptr;  // not part of the state: a measurement of this run
 };
 
 }  // namespace geocomp::dem

@@ -2,6 +2,18 @@
 
 namespace geocomp::dem {
 
+namespace {
+/// Worker w meets a body whose target is t: the first worker's index, kShared after two.
+inline void meet(std::uint32_t& t, std::uint32_t w)
+{
+  std::uint32_t seen = __atomic_load_n(&t, __ATOMIC_RELAXED);
+  while (seen != w && seen != LoadScatter::kShared) {
+    const std::uint32_t want = seen == LoadScatter::kShared - 1 ? w : LoadScatter::kShared;
+    if (__atomic_compare_exchange_n(&t, &seen, want, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) return;
+  }
+}
+}  // namespace
+
 void LoadScatter::plan(const ContactLists& lists, std::size_t n, std::size_t block, int workers,
                        std::uint64_t generation)
 {
@@ -16,28 +28,33 @@ void LoadScatter::plan(const ContactLists& lists, std::size_t n, std::size_t blo
   block_ = block;
   workers_ = workers;
 
-  // First pass: target_ holds the first worker that meets each body, kShared once a
-  // second worker meets it, kUnmet for bodies without pair slots.
+  // First pass, one thread per worker: target_ holds the first worker that meets each
+  // body, kShared once a second worker meets it, kUnmet for bodies without pair slots
+  // (compare-and-swap: the final value does not depend on which worker came first).
   constexpr std::uint32_t kUnmet = kShared - 1;
-  target_.assign(n, kUnmet);
+  target_.resize(n);
+  std::uint32_t* const target = target_.data();
   const std::size_t nb = (n_pairs + block - 1) / block;
-  for (int w = 0; w < workers; ++w) {
-    const auto [b0, b1] = blocks_of(w, workers, nb);
-    const std::size_t end = std::min(n_pairs, b1 * block);
-    for (std::size_t c = b0 * block; c < end; ++c) {
-      for (const Index p : {lists.pairs[c].i, lists.pairs[c].j}) {
-        std::uint32_t& t = target_[p];
-        if (t == kUnmet) t = std::uint32_t(w);
-        else if (t != std::uint32_t(w)) t = kShared;
-      }
+  const PairSlot* const pairs = lists.pairs.data();
+#pragma omp parallel num_threads(workers)
+  {
+#pragma omp for schedule(static)
+    for (std::int64_t p = 0; p < std::int64_t(n); ++p) target[p] = kUnmet;
+#pragma omp for schedule(static, 1)
+    for (int w = 0; w < workers; ++w) {
+      const auto [b0, b1] = blocks_of(w, workers, nb);
+      const std::size_t end = std::min(n_pairs, b1 * block);
+      for (std::size_t c = b0 * block; c < end; ++c)
+        for (const Index p : {pairs[c].i, pairs[c].j}) meet(target[p], std::uint32_t(w));
     }
+    // Second pass: a private body's row is its own index.
+#pragma omp for schedule(static)
+    for (std::int64_t p = 0; p < std::int64_t(n); ++p)
+      if (target[p] != kShared) target[p] = std::uint32_t(p);
   }
-  // Second pass: a private body's row is its own index.
   shared_.clear();
-  for (std::size_t p = 0; p < n; ++p) {
-    if (target_[p] == kShared) shared_.push_back(Index(p));
-    else target_[p] = std::uint32_t(p);
-  }
+  for (std::size_t p = 0; p < n; ++p)
+    if (target[p] == kShared) shared_.push_back(Index(p));
   rows_.resize(n + kJunkRows * std::size_t(workers));
 }
 

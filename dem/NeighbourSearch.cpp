@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <iterator>
+#include <new>
 #include <string>
 #include <stdexcept>
 
@@ -150,17 +153,105 @@ const HistoryEntry* NeighbourSearch::find_pair_history(std::uint64_t key) const
   return nullptr;
 }
 
+bool NeighbourSearch::same_particles(const ParticleStore& store, const ContactLists& lists, int threads) const
+{
+  const std::size_t n = store.size();
+  if (!carry_ready_ || built_ids_.size() != n || run_start_.size() != n + 1 || run_start_[n] != lists.pairs.size() ||
+      lists.wall_offset.size() != n + 1 || lists.wall_offset[n] != lists.walls.size())
+    return false;
+  bool same = true;
+#pragma omp parallel for schedule(static) reduction(&& : same) num_threads(threads)
+  for (std::int64_t p = 0; p < std::int64_t(n); ++p) same = same && store.id[p] == built_ids_[p];
+  return same;
+}
+
+NeighbourSearch::Previous NeighbourSearch::keep_previous(ContactLists& lists, int threads)
+{
+  Previous prev;
+  const std::size_t n_pairs = lists.pairs.size();
+  prev.pairs.reset(static_cast<PairSlot*>(std::malloc(std::max<std::size_t>(1, n_pairs) * sizeof(PairSlot))));
+  if (!prev.pairs) throw std::bad_alloc();
+  // Copied, not swapped: lists.pairs keeps its capacity (and its pages) for the new slots;
+  // the copy's pages are first touched by the threads that copy them.
+  const PairSlot* const from = lists.pairs.data();
+  PairSlot* const to = prev.pairs.get();
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t k = 0; k < std::int64_t(n_pairs); ++k) std::memcpy(&to[k], &from[k], sizeof(PairSlot));
+  prev.run_start.swap(run_start_);
+  prev.walls.swap(lists.walls);
+  prev.wall_offset.swap(lists.wall_offset);
+  return prev;
+}
+
+void NeighbourSearch::carry_pair(PairSlot& s, const Previous* prev, const std::vector<ParticleId>& id) const
+{
+  const Index a = s.i, b = s.j;
+  s.overlap = 0.0;
+  s.shear.setZero();
+  if (prev) {
+    // The last build's slot of the same two particles, in the run of the one earlier in
+    // the old storage; its spring acts on the later one there.
+    const Index oa = old_index(a), ob = old_index(b);
+    const Index lo = std::min(oa, ob), hi = std::max(oa, ob);
+    for (std::uint32_t k = prev->run_start[lo]; k < prev->run_start[lo + 1]; ++k) {
+      const PairSlot& o = prev->pairs[k];
+      if (o.j != hi) continue;
+      if (o.overlap > 0.0 || o.shear.squaredNorm() > 0.0) {  // the archive's rule: active slots only
+        s.overlap = o.overlap;
+        s.shear = oa == lo ? o.shear : Vec3(-o.shear);
+      }
+      return;
+    }
+    return;
+  }
+  // The archive holds the vectors acting on the higher id, flipped here when that is i
+  // (IEEE negation is exact, so both ways give the same bits).
+  const HistoryEntry* h = find_pair_history(pair_key(id[a], id[b]));
+  if (!h) return;
+  s.overlap = h->overlap;
+  s.shear = id[a] < id[b] ? h->shear : Vec3(-h->shear);
+}
+
+void NeighbourSearch::carry_wall(WallSlot& s, const Previous* prev, const std::vector<ParticleId>& id) const
+{
+  s.overlap = 0.0;
+  s.shear.setZero();
+  if (prev) {
+    const Index op = old_index(s.particle);
+    for (std::uint32_t k = prev->wall_offset[op]; k < prev->wall_offset[op + 1]; ++k) {
+      const WallSlot& o = prev->walls[k];
+      if (o.wall != s.wall) continue;
+      if (o.overlap > 0.0 || o.shear.squaredNorm() > 0.0) {
+        s.overlap = o.overlap;
+        s.shear = o.shear;
+      }
+      return;
+    }
+    return;
+  }
+  const HistoryEntry* h = find_history(wall_archive_, wall_key(s.wall, id[s.particle]));
+  if (h) {
+    s.overlap = h->overlap;
+    s.shear = h->shear;
+  }
+}
+
 bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>& walls, ContactLists& lists,
                               int threads)
 {
   if (!(skin_ > 0.0)) throw std::logic_error("NeighbourSearch: skin not set");
-  // (1) Histories by stable key, before any index changes.
-  if (!imported_) archive(store, lists);
+  // (1) Histories: straight from the last build's slots while the particles are the same
+  // ones in the same storage (the usual case), else archived by stable key, before any
+  // index changes (checkpoint imports, particles added or removed).
+  const bool direct = !imported_ && same_particles(store, lists, threads);
+  if (!direct && !imported_) archive(store, lists);
   imported_ = false;
-  index_pair_archive();
+  if (!direct) index_pair_archive();
   if (!memory_imported_) archive_memory(store, lists);
   memory_imported_ = false;
-  const bool memory = lists.with_memory;
+  Previous kept;
+  if (direct) kept = keep_previous(lists, threads);
+  const Previous* const prev = direct ? &kept : nullptr;
 
   const std::size_t n = store.size();
   double r_max = 0.0;
@@ -168,19 +259,49 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   grid_.build(store.x, 2.0 * r_max + reach_ + skin_);
 
   // (2) Spatial sorting.
-  bool permuted = false;
+  permuted_ = false;
   if (sort_ && n > 1) {
     const auto& order = grid_.sorted();
     bool identity = true;
-    for (std::size_t k = 0; k < n && identity; ++k) identity = (order[k] == k);
+#pragma omp parallel for schedule(static) reduction(&& : identity) num_threads(threads)
+    for (std::int64_t k = 0; k < std::int64_t(n); ++k) identity = identity && order[k] == Index(k);
     if (!identity) {
-      store.permute(order);
+      old_of_ = order;  // new index k was old order[k]
+      store.permute(order, threads);
       grid_.adopt_sorted_order();
-      permuted = true;
+      permuted_ = true;
     }
   }
 
-  // (3) Pair list: two passes (count, fill) over particles, each in its own range.
+  build_pairs(store, lists, prev, threads);  // (3), (4)
+  build_incident(lists, threads);            // (5)
+  build_walls(store, walls, lists, prev, threads);
+
+  x_ref_.resize(n);
+  built_ids_.resize(n);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
+    x_ref_[p] = store.x[p];
+    built_ids_[p] = store.id[p];
+    store.orientation[p].normalize();  // unit quaternions drift by round-off only
+  }
+  wall_ref_.resize(walls.size());
+  for (std::size_t w = 0; w < walls.size(); ++w) wall_ref_[w] = walls[w].point;
+  // The archives served this build only (the next one archives the lists anew, or reads
+  // the lists themselves): give their memory back, about 40 bytes per contact.
+  release(pair_archive_);
+  release(pair_archive_start_);
+  release(wall_archive_);
+  release(pair_memory_archive_);
+  release(wall_memory_archive_);
+  carry_ready_ = true;
+  ++n_builds_;
+  return permuted_;
+}
+
+void NeighbourSearch::build_pairs(const ParticleStore& store, ContactLists& lists, const Previous* prev, int threads)
+{
+  const std::size_t n = store.size();
   const auto& x = store.x;
   const auto& R = store.radius;
   const auto& body = store.body;
@@ -199,105 +320,129 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
     if (cell_order) grid_.for_each_after(a, f);
     else grid_.for_each_near(grid_.cell_of_particle(a), f);
   };
-  count_.assign(n + 1, 0);
+  // Two passes (count, fill) over particles, each in its own range; particle a's slots
+  // are the run [run_start_[a], run_start_[a + 1]).
+  run_start_.assign(n + 1, 0);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t a = 0; a < std::int64_t(n); ++a) {
     std::uint32_t c = 0;
     for_each_candidate(Index(a), [&](Index b) { c += listed(Index(a), b) ? 1u : 0u; });
-    count_[a + 1] = c;
+    run_start_[a + 1] = c;
   }
-  for (std::size_t a = 0; a < n; ++a) count_[a + 1] += count_[a];
-  const std::size_t n_pairs = count_[n];
+  for (std::size_t a = 0; a < n; ++a) run_start_[a + 1] += run_start_[a];
+  const std::size_t n_pairs = run_start_[n];
+  const bool memory = lists.with_memory;
   if (lists.pairs.capacity() < n_pairs) lists.pairs.reserve(n_pairs + n_pairs / 8);
   lists.pairs.resize(n_pairs);
   lists.pair_memory.resize(memory ? n_pairs : 0);
-  lists.pair_loads.assign(n_pairs, SlotLoad{});  // the next force pass writes them
+  lists.pair_loads.resize(n_pairs);
   const auto& id = store.id;
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t a = 0; a < std::int64_t(n); ++a) {
-    std::uint32_t k = count_[a];
+    std::uint32_t k = run_start_[a];
     for_each_candidate(Index(a), [&](Index b) {
       if (!listed(Index(a), b)) return;
-      PairSlot& s = lists.pairs[k++];
       // i is the particle earlier in storage (the slots of a particle's run are its own,
-      // so pass A and pass B read i sequentially); the archive holds the vectors acting on
-      // the higher id, flipped here when that is i (IEEE negation is exact).
+      // so pass A and pass B read i sequentially).
+      PairSlot& s = lists.pairs[k];
       s.i = Index(a);
       s.j = b;
-      const bool id_order = id[a] < id[b];
-      // (4) Carry the history over.
-      const HistoryEntry* h = find_pair_history(pair_key(id[a], id[b]));
-      s.overlap = h ? h->overlap : 0.0;
-      s.shear = h ? (id_order ? h->shear : Vec3(-h->shear)) : Vec3::Zero();
+      carry_pair(s, prev, id);  // (4) the history carried over
+      lists.pair_loads[k] = SlotLoad{};  // the next force pass writes them
       if (memory)
-        lists.pair_memory[k - 1] =
-          oriented(find_memory(pair_memory_archive_, broken_pairs_, pair_key(id[a], id[b])), id_order);
+        lists.pair_memory[k] =
+          oriented(find_memory(pair_memory_archive_, broken_pairs_, pair_key(id[a], id[b])), id[a] < id[b]);
+      ++k;
     });
   }
+}
 
-  // (5) Gather index: incident slots of every particle, ascending slot order.
-  lists.incident_offset.assign(n + 1, 0);
-  for (const PairSlot& s : lists.pairs) {
-    ++lists.incident_offset[s.i + 1];
-    ++lists.incident_offset[s.j + 1];
+void NeighbourSearch::build_incident(ContactLists& lists, int threads)
+{
+  // Incident slots of every particle in ascending slot order: those where it is j (from
+  // the runs of earlier particles, so before its own run), sorted, then its own run.
+  const std::size_t n = run_start_.size() - 1, n_pairs = lists.pairs.size();
+  const PairSlot* const pairs = lists.pairs.data();
+  count_.assign(n, 0);
+  std::uint32_t* const cursor = count_.data();
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t k = 0; k < std::int64_t(n_pairs); ++k) {
+#pragma omp atomic update
+    ++cursor[pairs[k].j];
   }
-  for (std::size_t p = 0; p < n; ++p) lists.incident_offset[p + 1] += lists.incident_offset[p];
-  if (lists.incident.capacity() < 2 * n_pairs) lists.incident.reserve(2 * n_pairs + n_pairs / 4);
+  auto& off = lists.incident_offset;
+  off.resize(n + 1);
+  off[0] = 0;
+  for (std::size_t p = 0; p < n; ++p) off[p + 1] = off[p] + cursor[p] + (run_start_[p + 1] - run_start_[p]);
   lists.incident.resize(2 * n_pairs);
-  count_.assign(lists.incident_offset.begin(), lists.incident_offset.end() - 1);
-  for (std::size_t k = 0; k < n_pairs; ++k) {
-    const PairSlot& s = lists.pairs[k];
-    lists.incident[count_[s.i]++] = std::uint32_t(k << 1);
-    lists.incident[count_[s.j]++] = std::uint32_t((k << 1) | 1u);
-  }
-
-  // Wall candidates, sorted by particle.
-  lists.walls.clear();
-  lists.wall_memory.clear();
-  lists.wall_offset.assign(n + 1, 0);
-  for (std::size_t p = 0; p < n; ++p) {
-    if (inv_m[p] != 0.0) {
-      for (std::size_t w = 0; w < walls.size(); ++w) {
-        if (walls[w].distance(x[p]) < R[p] + reach_ + skin_) {
-          WallSlot s;
-          s.wall = Index(w);
-          s.particle = Index(p);
-          const HistoryEntry* h = find_history(wall_archive_, wall_key(std::uint32_t(w), id[p]));
-          if (h) {
-            s.overlap = h->overlap;
-            s.shear = h->shear;
-          }
-          lists.walls.push_back(s);
-          if (memory)
-            lists.wall_memory.push_back(
-              find_memory(wall_memory_archive_, broken_walls_, wall_key(std::uint32_t(w), id[p])));
-        }
-      }
+  std::uint32_t* const inc = lists.incident.data();
+#pragma omp parallel num_threads(threads)
+  {
+#pragma omp for schedule(static)
+    for (std::int64_t p = 0; p < std::int64_t(n); ++p) cursor[p] = off[p];
+#pragma omp for schedule(static)
+    for (std::int64_t k = 0; k < std::int64_t(n_pairs); ++k) {
+      std::uint32_t at;
+#pragma omp atomic capture
+      at = cursor[pairs[k].j]++;
+      inc[at] = std::uint32_t(k << 1) | 1u;
     }
-    lists.wall_offset[p + 1] = std::uint32_t(lists.walls.size());
+#pragma omp for schedule(static)
+    for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
+      std::sort(inc + off[p], inc + cursor[p]);  // the j entries, (k << 1) | 1: by slot
+      std::uint32_t at = cursor[p];
+      for (std::uint32_t k = run_start_[p]; k < run_start_[p + 1]; ++k) inc[at++] = std::uint32_t(k << 1);
+    }
   }
-  lists.wall_loads.assign(lists.walls.size(), SlotLoad{});
+}
 
-  x_ref_ = store.x;
-  wall_ref_.resize(walls.size());
-  for (std::size_t w = 0; w < walls.size(); ++w) wall_ref_[w] = walls[w].point;
-  // Unit quaternions drift by round-off only; renormalise once per build.
-  for (Quat& q : store.orientation) q.normalize();
-  // The archives served this build only (the next one archives the lists anew): give their
-  // memory back, about 40 bytes per contact, instead of holding it between builds.
-  release(pair_archive_);
-  release(pair_archive_start_);
-  release(wall_archive_);
-  release(pair_memory_archive_);
-  release(wall_memory_archive_);
-  ++n_builds_;
-  return permuted;
+void NeighbourSearch::build_walls(const ParticleStore& store, const std::vector<PlaneWall>& walls,
+                                  ContactLists& lists, const Previous* prev, int threads)
+{
+  // Wall candidates, sorted by particle: count, then fill, each particle in its range.
+  const std::size_t n = store.size();
+  const auto& x = store.x;
+  const auto& R = store.radius;
+  const auto& id = store.id;
+  const bool memory = lists.with_memory;
+  auto near = [&](std::size_t p, std::size_t w) {
+    return store.inv_mass[p] != 0.0 && walls[w].distance(x[p]) < R[p] + reach_ + skin_;
+  };
+  auto& off = lists.wall_offset;
+  off.assign(n + 1, 0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
+    std::uint32_t c = 0;
+    for (std::size_t w = 0; w < walls.size(); ++w) c += near(std::size_t(p), w) ? 1u : 0u;
+    off[p + 1] = c;
+  }
+  for (std::size_t p = 0; p < n; ++p) off[p + 1] += off[p];
+  lists.walls.resize(off[n]);
+  lists.wall_memory.resize(memory ? off[n] : 0);
+  lists.wall_loads.resize(off[n]);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t p = 0; p < std::int64_t(n); ++p) {
+    std::uint32_t k = off[p];
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      if (!near(std::size_t(p), w)) continue;
+      WallSlot& s = lists.walls[k];
+      s.wall = Index(w);
+      s.particle = Index(p);
+      carry_wall(s, prev, id);
+      lists.wall_loads[k] = SlotLoad{};
+      if (memory)
+        lists.wall_memory[k] = find_memory(wall_memory_archive_, broken_walls_, wall_key(std::uint32_t(w), id[p]));
+      ++k;
+    }
+  }
 }
 
 std::size_t NeighbourSearch::memory_bytes() const
 {
   return grid_.memory_bytes() + (x_ref_.capacity() + wall_ref_.capacity()) * sizeof(Vec3) +
-         (count_.capacity() + pair_archive_start_.capacity()) * sizeof(std::uint32_t) +
+         (count_.capacity() + pair_archive_start_.capacity() + run_start_.capacity() + old_of_.capacity()) *
+           sizeof(std::uint32_t) +
+         built_ids_.capacity() * sizeof(ParticleId) +
          (pair_archive_.capacity() + wall_archive_.capacity()) * sizeof(HistoryEntry) +
          (pair_memory_archive_.capacity() + wall_memory_archive_.capacity()) * sizeof(MemoryEntry) +
          (broken_pairs_.capacity() + broken_walls_.capacity()) * sizeof(std::uint64_t);
@@ -331,6 +476,7 @@ void NeighbourSearch::read_state(std::istream& in)
   if (in) binary::get(in, version);
   if (!in || std::string(tag, 8) != "NBSEARCH" || (version != 1 && version != 2))
     throw binary::StateError("checkpoint: section 'NBSEARCH' not found or of another version");
+  carry_ready_ = false;  // the lists read beside this state were not built here
   binary::get(in, skin_);
   binary::get(in, sort_);
   binary::get(in, imported_);

@@ -6,11 +6,15 @@
 //  - a pair is listed if $|x_i - x_j| < R_i + R_j + s$, a wall candidate if $h < R + s$;
 //  - the lists stay valid while every particle moved less than s/2 since the build
 //    and, for walls, particle plus wall displacement stays below s.
-// A rebuild (1) archives the tangential histories keyed by stable ids, (2) optionally
-// reorders the particle storage into cell order (spatial sorting: neighbours become
-// neighbours in memory), (3) builds the new lists, (4) carries each history over by a
-// binary search on its key, and (5) builds the gather index. Everything is
-// deterministic and independent of the thread count. Pairs inside one rigid body and
+// A rebuild (1) keeps the histories: while the particles are the ones of the last build
+// in the same storage, the last build's slots are kept aside as they are; otherwise
+// (checkpoint imports, particles added or removed) they are archived keyed by stable ids;
+// (2) optionally reorders the particle storage into cell order (spatial sorting:
+// neighbours become neighbours in memory), (3) builds the new lists, (4) carries each
+// history over, from the kept slot of the same two particles (a scan of the few slots of
+// one of them) or from the archive by its key: both give the same bits, and (5) builds
+// the gather index. Every stage runs in parallel over particles or slots except a few
+// prefix sums; everything is deterministic and independent of the thread count. Pairs inside one rigid body and
 // pairs of two kinematic particles are never listed.
 //
 // Laws with memory (rolling, bonds: ContactMemory.h) have their per-slot memory carried
@@ -25,7 +29,9 @@
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
 
+#include <cstdlib>
 #include <iosfwd>
+#include <memory>
 #include <vector>
 
 namespace geocomp::dem {
@@ -66,6 +72,32 @@ public:
   void read_state(std::istream& in);
 
 private:
+  /// The last build's slots and their indexes, kept aside while the new lists are built.
+  struct Previous
+  {
+    struct Free
+    {
+      void operator()(PairSlot* p) const { std::free(p); }
+    };
+    std::unique_ptr<PairSlot[], Free> pairs;
+    std::vector<std::uint32_t> run_start;
+    std::vector<WallSlot> walls;
+    std::vector<std::uint32_t> wall_offset;
+  };
+  /// True when `lists` are this object's last build for the same particles in the same
+  /// storage (then the histories are carried from them directly).
+  bool same_particles(const ParticleStore& store, const ContactLists& lists, int threads) const;
+  Previous keep_previous(ContactLists& lists, int threads);
+  /// The storage index at the last build of the particle now at k.
+  Index old_index(Index k) const { return permuted_ ? old_of_[k] : k; }
+  /// The overlap and spring of slot s (its i and j set) from the kept slots, or from the
+  /// archive when `prev` is null.
+  void carry_pair(PairSlot& s, const Previous* prev, const std::vector<ParticleId>& id) const;
+  void carry_wall(WallSlot& s, const Previous* prev, const std::vector<ParticleId>& id) const;
+  void build_pairs(const ParticleStore& store, ContactLists& lists, const Previous* prev, int threads);
+  void build_incident(ContactLists& lists, int threads);
+  void build_walls(const ParticleStore& store, const std::vector<PlaneWall>& walls, ContactLists& lists,
+                   const Previous* prev, int threads);
   void archive(const ParticleStore& store, const ContactLists& lists);
   void archive_memory(const ParticleStore& store, const ContactLists& lists);
   /// Indexes the sorted pair archive by the lower id of its keys (pair_archive_start_).
@@ -82,7 +114,12 @@ private:
   CellGrid grid_;
   std::vector<Vec3> x_ref_;
   std::vector<Vec3> wall_ref_;
-  std::vector<std::uint32_t> count_;
+  std::vector<std::uint32_t> count_;      // scratch of the gather index
+  std::vector<std::uint32_t> run_start_;  // particle a's pair slots: [run_start_[a], run_start_[a + 1])
+  std::vector<ParticleId> built_ids_;     // the ids in storage order at the last build
+  std::vector<Index> old_of_;             // this build's sort: new index k was old_of_[k]
+  bool permuted_ = false;                 // this build sorted the storage
+  bool carry_ready_ = false;              // the last lists were built here (not read or imported)
   std::vector<HistoryEntry> pair_archive_, wall_archive_;
   /// Entries of lower id k: pair_archive_[start[k] .. start[k+1]) (k beyond: none).
   std::vector<std::uint32_t> pair_archive_start_;

@@ -1,5 +1,9 @@
 #include "dem/ParticleStore.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <memory>
 #include <stdexcept>
 
 namespace geocomp::dem {
@@ -59,43 +63,37 @@ void ParticleStore::remove(Index k)
   move_last(id); move_last(body); move_last(flags);
 }
 
-void ParticleStore::permute(const std::vector<Index>& order)
+namespace {
+/// a[k] = a[order[k]] for every k, through `scratch` (n elements of the largest type).
+template <class T>
+void gather(std::vector<T>& a, const std::vector<Index>& order, unsigned char* scratch, int threads)
+{
+  // Moved by bytes: plain numbers, or Eigen's fixed-size types, which hold only their
+  // coefficients (as the checkpoints and the batched kernels read them too).
+  const std::int64_t n = std::int64_t(a.size());
+  unsigned char* const base = reinterpret_cast<unsigned char*>(a.data());
+#pragma omp parallel num_threads(threads)
+  {
+#pragma omp for schedule(static)
+    for (std::int64_t k = 0; k < n; ++k) std::memcpy(scratch + k * sizeof(T), base + order[k] * sizeof(T), sizeof(T));
+#pragma omp for schedule(static)
+    for (std::int64_t k = 0; k < n; ++k) std::memcpy(base + k * sizeof(T), scratch + k * sizeof(T), sizeof(T));
+  }
+}
+}  // namespace
+
+void ParticleStore::permute(const std::vector<Index>& order, int threads)
 {
   const std::size_t n = size();
   if (order.size() != n) throw std::invalid_argument("ParticleStore::permute: wrong size");
-  visited_.assign(n, 0);
-  for (std::size_t start = 0; start < n; ++start) {
-    if (visited_[start] || order[start] == start) {
-      visited_[start] = 1;
-      continue;
-    }
-    // Walk the cycle start <- order[start] <- order[order[start]] ... back to start.
-    const Vec3 tx = x[start], tv = v[start], tw = omega[start], tf = force[start], tt = torque[start];
-    const Quat tq = orientation[start];
-    const double tr = radius[start], tm = mass[start], tim = inv_mass[start], tii = inv_inertia[start];
-    const ParticleId tid = id[start];
-    const std::int32_t tb = body[start];
-    const std::uint32_t tfl = flags[start];
-    std::size_t dst = start;
-    for (;;) {
-      visited_[dst] = 1;
-      const std::size_t src = order[dst];
-      if (src == start) {
-        x[dst] = tx; v[dst] = tv; omega[dst] = tw; force[dst] = tf; torque[dst] = tt;
-        orientation[dst] = tq;
-        radius[dst] = tr; mass[dst] = tm; inv_mass[dst] = tim; inv_inertia[dst] = tii;
-        id[dst] = tid; body[dst] = tb; flags[dst] = tfl;
-        break;
-      }
-      x[dst] = x[src]; v[dst] = v[src]; omega[dst] = omega[src];
-      force[dst] = force[src]; torque[dst] = torque[src];
-      orientation[dst] = orientation[src];
-      radius[dst] = radius[src]; mass[dst] = mass[src];
-      inv_mass[dst] = inv_mass[src]; inv_inertia[dst] = inv_inertia[src];
-      id[dst] = id[src]; body[dst] = body[src]; flags[dst] = flags[src];
-      dst = src;
-    }
-  }
+  constexpr std::size_t kLargest = std::max({sizeof(Vec3), sizeof(Quat), sizeof(double), sizeof(ParticleId)});
+  const std::unique_ptr<unsigned char[]> scratch(new unsigned char[n * kLargest]);
+  for (auto* a : {&x, &v, &omega, &force, &torque}) gather(*a, order, scratch.get(), threads);
+  gather(orientation, order, scratch.get(), threads);
+  for (auto* a : {&radius, &mass, &inv_mass, &inv_inertia}) gather(*a, order, scratch.get(), threads);
+  gather(id, order, scratch.get(), threads);
+  gather(body, order, scratch.get(), threads);
+  gather(flags, order, scratch.get(), threads);
 }
 
 std::size_t ParticleStore::memory_bytes() const
@@ -104,7 +102,7 @@ std::size_t ParticleStore::memory_bytes() const
        + orientation.capacity() * sizeof(Quat)
        + (radius.capacity() + mass.capacity() + inv_mass.capacity() + inv_inertia.capacity()) * sizeof(double)
        + id.capacity() * sizeof(ParticleId) + body.capacity() * sizeof(std::int32_t)
-       + flags.capacity() * sizeof(std::uint32_t) + visited_.capacity();
+       + flags.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace geocomp::dem

@@ -43,9 +43,10 @@ public:
   /// its id-to-index map).
   void remove(Index k);
 
-  /// Reorders all arrays so that new[k] = old[order[k]] (in place, cycle by cycle; the
-  /// only scratch is one byte per particle, kept for the next call).
-  void permute(const std::vector<Index>& order);
+  /// Reorders all arrays so that new[k] = old[order[k]]: each array gathered into one
+  /// scratch buffer and copied back, both in parallel over `threads` (the scratch, the
+  /// largest element times the count, lives for the call only).
+  void permute(const std::vector<Index>& order, int threads = 1);
 
   /// Bytes held by the arrays (capacity, not size).
   std::size_t memory_bytes() const;
@@ -59,9 +60,6 @@ public:
   std::vector<ParticleId> id;
   std::vector<std::int32_t> body;
   std::vector<std::uint32_t> flags;
-
-private:
-  std::vector<unsigned char> visited_;
 };
 
 }  // namespace geocomp::dem

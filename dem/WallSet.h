@@ -11,8 +11,9 @@
 //   $T_k = \sum_c (x_c - p_k)\times(-F_c) - M_{r,c}$ (contact point $x_c$ on the plane,
 //   rolling moment $M_r$ where the law has one),
 //   $K_k = \sum k_{n,c}$ and the count over the touching slots,
-// all summed in slot order (serial; pass A computes each slot's terms in parallel,
-// record_term), so they do not depend on the thread count. Over a step the wall does
+// each summed over its own slots in slot order (pass A computes each slot's terms in
+// parallel, record_term; then each wall's sum runs on one thread, sum_record, the walls
+// on different threads), so they do not depend on the thread count. Over a step the wall does
 // the work $W \mathrel{+}= -\tfrac12(F^{old} + F^{new})\cdot V\Delta t$ (trapezoidal rule,
 // DEM-NOTES section 10.3), see add_work().
 #pragma once
@@ -25,6 +26,7 @@
 #include "dem/PlaneWall.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace geocomp::dem {
@@ -80,10 +82,10 @@ public:
   template <class Law>
   void record_term(const Law& law, const ParticleStore& store, const ContactLists& lists, std::size_t c,
                    const Vec3& n_w);
-  /// Every wall's force, torque, stiffness and count from the slots' loads and terms, in
-  /// slot order.
+  /// Wall w's force, torque, stiffness and count from the loads and terms of its slots
+  /// `slots[0 .. count)`, ascending: every wall slot of w in slot order.
   template <bool Rolling>
-  void sum_records(const ContactLists& lists);
+  void sum_record(const ContactLists& lists, std::size_t w, const std::uint32_t* slots, std::size_t count);
 
   std::size_t memory_bytes() const;
 
@@ -118,19 +120,17 @@ inline void WallSet::record_term(const Law& law, const ParticleStore& store, con
 }
 
 template <bool Rolling>
-void WallSet::sum_records(const ContactLists& lists)
+void WallSet::sum_record(const ContactLists& lists, std::size_t w, const std::uint32_t* slots, std::size_t count)
 {
-  for (PlaneWall& wall : walls_) {
-    wall.force.setZero();
-    wall.torque.setZero();
-    wall.stiffness = 0.0;
-    wall.n_contacts = 0;
-  }
-  for (std::size_t c = 0; c < lists.walls.size(); ++c) {
+  PlaneWall& wall = walls_[w];
+  wall.force.setZero();
+  wall.torque.setZero();
+  wall.stiffness = 0.0;
+  wall.n_contacts = 0;
+  for (std::size_t e = 0; e < count; ++e) {
+    const std::size_t c = slots[e];
     const Term& term = terms_[c];
     if (!term.recorded) continue;
-    const WallSlot& s = lists.walls[c];
-    PlaneWall& wall = walls_[s.wall];
     wall.force -= lists.wall_loads[c].force;
     wall.torque += term.torque;
     if constexpr (Rolling) wall.torque -= lists.wall_memory[c].rolling;  // the wall receives -M_r
