@@ -159,13 +159,22 @@ void DemSystem::set_time_step(double dt)
   dt_ = dt;
 }
 
+// The count given is kept as given; the automatic one is never more than the size pays for
+// (ThreadCount.h), nor the OpenMP maximum (OMP_NUM_THREADS, else the cores).
 void DemSystem::set_num_threads(int n)
 {
+  threads_setting_ = std::max(0, n);
+  threads_ = num_threads();
+}
+
+int DemSystem::num_threads() const
+{
+  if (threads_setting_ > 0) return threads_setting_;
 #ifdef _OPENMP
-  if (n <= 0)
-    n = omp_get_max_threads(); // 0: the OpenMP default (OMP_NUM_THREADS, else the cores)
+  return threads_for(store_.size(), omp_get_max_threads());
+#else
+  return 1;
 #endif
-  threads_ = std::max(1, n);
 }
 
 double DemSystem::critical_time_step() const
@@ -235,6 +244,7 @@ inline double with_growth(double max_d2, double growth)
 
 void DemSystem::prepare()
 {
+  threads_ = num_threads();  // the automatic count follows the particles (set_num_threads)
   if (search_.skin() <= 0.0) {
     double r_max = 0.0;
     for (double r : store_.radius) r_max = std::max(r_max, r);
@@ -458,13 +468,15 @@ EnergyLedger DemSystem::energy() const
 // law is a variant of trivially copyable parameter structs and is stored as its bytes.
 // Version 3 added the contact memory (rolling springs, bonds) and the clumps; version 4
 // moved the slots' loads beside them (ContactLists.h) and added the recording of contact
-// forces. Version 2 and 3 states (restart files, exact specimens in core stores) are still
-// read, through their old layouts (LegacyState.h), and continue as they would have.
+// forces; version 5 stores the thread setting (0: automatic) where the count was, in the
+// same layout. Version 2 to 4 states (restart files, exact specimens in core stores) are
+// still read, through their old layouts (LegacyState.h), and continue as they would have,
+// with their count as given.
 
 namespace {
-constexpr std::uint32_t kStateVersion = 4;
+constexpr std::uint32_t kStateVersion = 5;
 
-/// Reads the DEMSYSTM tag; returns its version (2 to 4).
+/// Reads the DEMSYSTM tag; returns its version (2 to 5).
 std::uint32_t read_state_version(std::istream& in)
 {
   char tag[8];
@@ -577,7 +589,7 @@ void DemSystem::write_state(std::ostream& out) const
   binary::put(out, wall_bonding_);
   write_clumps(out, clumps_);
   binary::put(out, dt_);
-  binary::put(out, threads_);
+  binary::put(out, threads_setting_);
   binary::put(out, gravity_);
   binary::put(out, integrator_.local_damping());
   binary::put(out, track_energy_);
@@ -674,7 +686,9 @@ void DemSystem::read_state(std::istream& in)
     clumps_ = ClumpSet{};
   }
   binary::get(in, dt_);
-  binary::get(in, threads_);
+  binary::get(in, threads_setting_);  // before version 5 the count the step used, >= 1: kept as given
+  if (threads_setting_ < 0 || (version < 5 && threads_setting_ == 0))
+    throw binary::StateError("checkpoint: invalid thread count");
   binary::get(in, gravity_);
   double local_damping = 0.0, overdamped = 0.0;
   binary::get(in, local_damping);
@@ -708,6 +722,7 @@ void DemSystem::read_state(std::istream& in)
     loads_current_ = true;
   }
   energy_.clear_scratch();
+  threads_ = num_threads();
 }
 
 std::size_t DemSystem::memory_bytes() const

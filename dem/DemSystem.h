@@ -65,6 +65,7 @@
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
 #include "dem/StepProfile.h"
+#include "dem/ThreadCount.h"
 #include "dem/WallSet.h"
 
 #include <cstdint>
@@ -203,9 +204,16 @@ public:
   double time_step() const { return dt_; }
   /// Verlet skin s (default 0.1 of the largest diameter, set at the first step).
   void set_skin(double s) { search_.set_skin(s); invalidate(); }
-  /// Threads of the step loop; n <= 0 takes the OpenMP default (OMP_NUM_THREADS, else all cores).
+  /// Threads of the step loop. n > 0: exactly n (`dem/threads` overrides). n <= 0: automatic,
+  /// from the problem size: threads_for(n_particles(), OpenMP max threads) (ThreadCount.h:
+  /// one thread per kMinParticlesPerThread particles), re-evaluated as each step starts, so
+  /// it follows the particles as they are added or removed. The trajectory is the same bits
+  /// for any count.
   void set_num_threads(int n);
-  int num_threads() const { return threads_; }
+  /// The threads the step uses: the count given, or the automatic one for the particles now.
+  int num_threads() const;
+  /// True after set_num_threads(n <= 0): the count follows the problem size.
+  bool automatic_threads() const { return threads_setting_ == 0; }
   void set_gravity(const Vec3& g) { gravity_ = g; invalidate(); }
   /// Cundall local damping coefficient lambda_d (0: off, default).
   void set_local_damping(double lambda) { integrator_.set_local_damping(lambda); }
@@ -345,7 +353,8 @@ private:
 
   // Settings and state of the step.
   double dt_ = 0.0;
-  int threads_ = 1;
+  int threads_setting_ = 1;  // set_num_threads(): n > 0 as given, 0 automatic (checkpointed)
+  int threads_ = 1;          // the count the step uses: threads_setting_, or the automatic one
   Vec3 gravity_ = Vec3::Zero();
   bool track_energy_ = false;
   bool batched_pairs_ = true;

@@ -116,7 +116,7 @@ struct ContactParameters {
 
 struct DemParameters {
   double time_step_safety = 0.2;        ///< dt = safety * critical step
-  unsigned int threads = 0;             ///< 0 = OpenMP default
+  unsigned int threads = 0;             ///< 0 = from the problem size (DemSystem::set_num_threads)
   double local_damping = 0.0;           ///< Cundall non-viscous damping while loading
   double skin = 0.1;                    ///< Verlet skin / mean diameter
   double servo_max_velocity = 0.05;     ///< [m/s] cap on a servo wall's speed (at least)

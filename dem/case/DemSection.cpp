@@ -1,6 +1,9 @@
 // The `dem` section: the DEM's numerics (time step, threads, skin, servo, guards,
 // snapshots, checkpoints), and the three DEM sections declared and parsed together.
 #include "dem/case/DemSections.h"
+#include "dem/ThreadCount.h"
+
+#include <string>
 
 namespace geocomp::sections {
 
@@ -12,7 +15,11 @@ void declare_dem(dealii::ParameterHandler &prm)
   prm.enter_subsection("dem");
   prm.declare_entry("time step safety", "0.2", Double(1e-4, 1.0),
                     "Time step as a fraction of the critical step (sqrt(m/k) or S4's Rayleigh step).");
-  prm.declare_entry("threads", "0", Integer(0, 1024), "OpenMP threads; 0 = the OpenMP default.");
+  prm.declare_entry("threads", "0", Integer(0, 1024),
+                    "OpenMP threads of the DEM step; 0 = from the problem size: one thread per " +
+                        std::to_string(dem::kMinParticlesPerThread) +
+                        " particles (at least one), at most the OpenMP default (OMP_NUM_THREADS, else "
+                        "the cores). The results are the same for any count.");
   prm.declare_entry("local damping", "0", Double(0, 0.99),
                     "Cundall local non-viscous damping while loading (0 = off; S0 loads without it).");
   prm.declare_entry("skin", "0.1", Double(0.001, 2.0), "Verlet skin as a fraction of the mean diameter.");

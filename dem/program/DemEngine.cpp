@@ -106,7 +106,7 @@ DemSystem make_system(const Packing &packing, const ContactParameters &c, const 
   system.set_friction(c.particle_friction);
   system.set_wall_bonding(c.wall_bonding);
   system.set_skin(d.skin * d_mean);
-  system.set_num_threads(int(d.threads)); // 0: the OpenMP default
+  system.set_num_threads(int(d.threads)); // 0: from the problem size
   system.set_local_damping(d.local_damping);
   system.set_time_step(d.time_step_safety * system.critical_time_step());
   return system;

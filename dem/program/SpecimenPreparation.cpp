@@ -126,7 +126,7 @@ PreparedSpecimen from_store(const DemCase &c)
 {
   StoredSpecimen stored = read_case_store(c);
   PreparedSpecimen out{std::move(stored.system), stored.record};
-  out.system.set_num_threads(int(c.dem.threads)); // 0: the OpenMP default; results do not depend on it
+  out.system.set_num_threads(int(c.dem.threads)); // 0: from the problem size; results do not depend on it
   out.system.set_local_damping(c.dem.local_damping);
   return out;
 }

@@ -306,13 +306,23 @@ TEST(DemEngine, CaseFileLawMapsOntoTheCore)
   EXPECT_THROW(DemEngine(DemSystem(), engine_parameters()), std::invalid_argument);
 }
 
-// `dem/threads = 0` (the default) must give the step loop the OpenMP default, not one thread.
-TEST(DemEngine, CaseThreadsZeroTakesTheOpenMPDefault)
+// `dem/threads = 0` (the default) gives the step the threads its size pays for: one for a
+// small specimen, more for a large one (at most the OpenMP maximum, here set to 4); a count
+// given overrides.
+TEST(DemEngine, CaseThreadsZeroTakesTheThreadsTheSizePaysFor)
 {
-  const Packing p = jittered_lattice(3, 0.01, 0.0, 0.05, 2000.0, 1);
+  const int old_max = omp_get_max_threads();
+  omp_set_num_threads(4);
   DemParameters d;
   d.threads = 0;
-  EXPECT_EQ(make_system(p, contact_parameters(), d).num_threads(), std::max(1, omp_get_max_threads()));
+  const Packing small = jittered_lattice(3, 0.01, 0.0, 0.05, 2000.0, 1);
+  EXPECT_EQ(make_system(small, contact_parameters(), d).num_threads(), 1);
+  const int edge = int(std::ceil(std::cbrt(2.0 * double(kMinParticlesPerThread))));
+  const Packing large = jittered_lattice(edge, 0.01, 0.0, 0.05, 2000.0, 1);
+  const int paid = int(std::min<std::size_t>(4, large.size() / kMinParticlesPerThread));
+  EXPECT_GE(paid, 2);
+  EXPECT_EQ(make_system(large, contact_parameters(), d).num_threads(), paid);
   d.threads = 3;
-  EXPECT_EQ(make_system(p, contact_parameters(), d).num_threads(), 3);
+  EXPECT_EQ(make_system(small, contact_parameters(), d).num_threads(), 3);
+  omp_set_num_threads(old_max);
 }
