@@ -122,22 +122,27 @@ inline void WallSet::record_term(const Law& law, const ParticleStore& store, con
 template <bool Rolling>
 void WallSet::sum_record(const ContactLists& lists, std::size_t w, const std::uint32_t* slots, std::size_t count)
 {
-  PlaneWall& wall = walls_[w];
-  wall.force.setZero();
-  wall.torque.setZero();
-  wall.stiffness = 0.0;
-  wall.n_contacts = 0;
+  // Summed in locals and stored once: the walls share cache lines, and other threads sum
+  // the other walls at the same time.
+  Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+  double stiffness = 0.0;
+  std::size_t n_contacts = 0;
   for (std::size_t e = 0; e < count; ++e) {
     const std::size_t c = slots[e];
     const Term& term = terms_[c];
     if (!term.recorded) continue;
-    wall.force -= lists.wall_loads[c].force;
-    wall.torque += term.torque;
-    if constexpr (Rolling) wall.torque -= lists.wall_memory[c].rolling;  // the wall receives -M_r
+    force -= lists.wall_loads[c].force;
+    torque += term.torque;
+    if constexpr (Rolling) torque -= lists.wall_memory[c].rolling;  // the wall receives -M_r
     if (!term.touching) continue;
-    wall.stiffness += term.stiffness;
-    ++wall.n_contacts;
+    stiffness += term.stiffness;
+    ++n_contacts;
   }
+  PlaneWall& wall = walls_[w];
+  wall.force = force;
+  wall.torque = torque;
+  wall.stiffness = stiffness;
+  wall.n_contacts = n_contacts;
 }
 
 }  // namespace geocomp::dem
