@@ -108,6 +108,13 @@ int main(int argc, char** argv)
     const double busy_mean = profile.pair_busy.empty() ? 0.0 : busy_sum / double(profile.pair_busy.size());
     std::printf(" pair_busy_max/mean=%.3f shared_bodies=%zu\n", busy_mean > 0.0 ? busy_max / busy_mean : 0.0,
                 profile.shared_bodies);
+    if (sys.n_rebuilds() > rebuilds0) {
+      std::printf("geocomp N=%zu threads=%d ms/rebuild:", n, threads);
+      for (std::size_t k = 0; k < StepProfile::n_build_parts; ++k)
+        std::printf(" %s=%.2f", StepProfile::build_part_names[k],
+                    1e3 * profile.build_seconds[k] / double(sys.n_rebuilds() - rebuilds0));
+      std::printf("\n");
+    }
   }
   std::printf("geocomp N=%zu threads=%d steps=%ld seconds=%.3f ns/particle-step: %.1f\n", n, threads, n_timed, seconds,
               seconds / double(n_timed) / double(n) * 1e9);

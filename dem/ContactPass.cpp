@@ -155,6 +155,10 @@ public:
         args->velocity_inv_mass = packed_vm_;
       }
     }
+    if (pass_.worker_seconds_.size() != std::size_t(workers_)) {
+      pass_.worker_seconds_.assign(std::size_t(workers_), 0.0);
+      pass_.measured_ = 0;
+    }
     scatter_.plan(lists_, n_, kBlock, workers_, in_.list_builds);
     rows_ = scatter_.rows();
     if (kick_dt_ > 0.0 && n_ > 0 && in_.batched_sweeps) {
@@ -198,7 +202,8 @@ public:
     const Arrays a = arrays();
     const std::size_t n_pairs = lists_.pairs.size();
     for (int wk = thread; wk < workers_; wk += n_threads) {
-      const auto [b_first, b_last] = LoadScatter::blocks_of(wk, workers_, nbp_);
+      const double t0 = PhaseClock::now();
+      const auto [b_first, b_last] = scatter_.blocks_of(wk);
       [[maybe_unused]] PairBatchArgs wbatch = batch_;
       wbatch.rows = reinterpret_cast<double*>(a.rows);  // 8 doubles per row, 64-byte aligned
       wbatch.row_of = scatter_.targets();
@@ -217,6 +222,7 @@ public:
         for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c) pair_slot(a, c, wk, lost);
         if constexpr (Track) lost.store(in_.energy.contact_block(b));
       }
+      pass_.worker_seconds_[std::size_t(wk)] += PhaseClock::now() - t0;
     }
   }
 
@@ -500,7 +506,22 @@ double ContactPass::run_with(const Law& law, const ContactPassInput& in, const F
     s.pass_b_shared();
     s.pass_b_bodies();
   }
-  return s.finish();
+  const double kick_loss = s.finish();
+  balance_workers();
+  return kick_loss;
+}
+
+void ContactPass::balance_workers()
+{
+  if (worker_seconds_.size() < 2 || ++measured_ < kBalanceEvaluations) return;
+  double longest = 0.0, total = 0.0;
+  for (double t : worker_seconds_) {
+    longest = std::max(longest, t);
+    total += t;
+  }
+  if (longest * double(worker_seconds_.size()) > kBalanceTolerance * total) scatter_.rebalance(worker_seconds_);
+  std::fill(worker_seconds_.begin(), worker_seconds_.end(), 0.0);
+  measured_ = 0;
 }
 
 /// run_with() with each stage timed (StepProfile.h): the master thread marks the end of
@@ -542,6 +563,7 @@ double ContactPass::run_profiled(const Law& law, const ContactPassInput& in, con
     if (master) clock.mark(StepProfile::bodies);
   }
   const double kick_loss = s.finish();
+  balance_workers();
   clock.mark(StepProfile::finish);
   return kick_loss;
 }

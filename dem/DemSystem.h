@@ -266,7 +266,11 @@ public:
   void run(std::size_t n_steps);
   /// Accumulate the steps' time per phase into `p` (StepProfile.h; nullptr: off, the
   /// default). The profile is the caller's and must outlive the steps it times.
-  void set_profile(StepProfile* p) { profile_ = p; }
+  void set_profile(StepProfile* p)
+  {
+    profile_ = p;
+    search_.set_profile(p);
+  }
   double time() const { return time_; }
   std::uint64_t n_steps() const { return steps_; }
   std::size_t n_rebuilds() const { return search_.n_builds(); }

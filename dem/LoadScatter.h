@@ -53,11 +53,8 @@ public:
   /// a row of its own, so consecutive slots do not wait on one row's read-modify-write.
   static constexpr std::size_t kJunkRows = 8;
 
-  /// Blocks [first, second) of worker w among `workers`, for `n_blocks` blocks.
-  static std::pair<std::size_t, std::size_t> blocks_of(int w, int workers, std::size_t n_blocks)
-  {
-    return {n_blocks * std::size_t(w) / std::size_t(workers), n_blocks * std::size_t(w + 1) / std::size_t(workers)};
-  }
+  /// Blocks [first, second) of worker w in the current plan.
+  std::pair<std::size_t, std::size_t> blocks_of(int w) const { return {bounds_[w], bounds_[w + 1]}; }
 
   /// Marks private and shared bodies for these lists, `n` bodies, blocks of `block`
   /// slots and `workers` workers, unless already planned for the same `generation` (the
@@ -66,6 +63,11 @@ public:
   void plan(const ContactLists& lists, std::size_t n, std::size_t block, int workers, std::uint64_t generation);
   /// Forgets the plan (the lists were replaced, e.g. read from a checkpoint).
   void invalidate() { planned_ = false; }
+  /// Plans anew at the next plan() with the workers' ranges moved so that each gets the
+  /// same share of `seconds` (each worker's measured time on its current range, the cost
+  /// taken as even within a range). The ranges only balance the threads: a body's load
+  /// has the gather's bits whatever they are (above), so the bits do not depend on them.
+  void rebalance(const std::vector<double>& seconds);
 
   /// The row body p's slots go to when worker w adds them.
   std::uint32_t row_of(Index p, int w) const
@@ -115,10 +117,15 @@ public:
   }
 
 private:
+  /// The workers' block ranges for n_pairs slots: even, or at the cuts rebalance() set.
+  void set_bounds(std::size_t n_pairs, std::size_t block, int workers);
+
   bool planned_ = false;
   std::uint64_t generation_ = 0;
   std::size_t n_ = 0, n_pairs_ = 0, block_ = 0;
   int workers_ = 0;
+  std::vector<std::size_t> bounds_;  // worker w: blocks [bounds_[w], bounds_[w + 1])
+  std::vector<double> cut_;          // the next plan's range ends as fractions of the slots (empty: even)
   std::vector<Index> shared_;
   std::vector<LoadRow> rows_;
   std::vector<std::uint32_t> target_;

@@ -51,6 +51,24 @@ void release(std::vector<T>& v)
 {
   std::vector<T>().swap(v);
 }
+
+/// PhaseClock for the rebuild's parts.
+class BuildClock
+{
+public:
+  explicit BuildClock(StepProfile* p) : profile_(p), last_(p ? PhaseClock::now() : 0.0) {}
+  void mark(StepProfile::BuildPart part)
+  {
+    if (!profile_) return;
+    const double t = PhaseClock::now();
+    profile_->build_seconds[part] += t - last_;
+    last_ = t;
+  }
+
+private:
+  StepProfile* profile_;
+  double last_;
+};
 }  // namespace
 
 void NeighbourSearch::set_reach(double r)
@@ -243,6 +261,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   // (1) Histories: straight from the last build's slots while the particles are the same
   // ones in the same storage (the usual case), else archived by stable key, before any
   // index changes (checkpoint imports, particles added or removed).
+  BuildClock clock(profile_);
   const bool direct = !imported_ && same_particles(store, lists, threads);
   if (!direct && !imported_) archive(store, lists);
   imported_ = false;
@@ -252,11 +271,13 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   Previous kept;
   if (direct) kept = keep_previous(lists, threads);
   const Previous* const prev = direct ? &kept : nullptr;
+  clock.mark(StepProfile::keep);
 
   const std::size_t n = store.size();
   double r_max = 0.0;
   for (double r : store.radius) r_max = std::max(r_max, r);
   grid_.build(store.x, 2.0 * r_max + reach_ + skin_);
+  clock.mark(StepProfile::grid);
 
   // (2) Spatial sorting.
   permuted_ = false;
@@ -273,9 +294,13 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
     }
   }
 
+  clock.mark(StepProfile::sort);
   build_pairs(store, lists, prev, threads);  // (3), (4)
+  clock.mark(StepProfile::pair_lists);
   build_incident(lists, threads);            // (5)
+  clock.mark(StepProfile::gather_index);
   build_walls(store, walls, lists, prev, threads);
+  clock.mark(StepProfile::wall_lists);
 
   x_ref_.resize(n);
   built_ids_.resize(n);
@@ -296,6 +321,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   release(wall_memory_archive_);
   carry_ready_ = true;
   ++n_builds_;
+  clock.mark(StepProfile::references);
   return permuted_;
 }
 

@@ -28,6 +28,7 @@
 #include "dem/ContactMemory.h"
 #include "dem/ParticleStore.h"
 #include "dem/PlaneWall.h"
+#include "dem/StepProfile.h"
 
 #include <cstdlib>
 #include <iosfwd>
@@ -65,6 +66,8 @@ public:
   const std::vector<std::uint64_t>& broken_bonds() const { return broken_pairs_; }
 
   std::size_t n_builds() const { return n_builds_; }
+  /// Times the rebuild's parts into `p` (StepProfile::build_seconds; nullptr: off).
+  void set_profile(StepProfile* p) { profile_ = p; }
   std::size_t memory_bytes() const;
   /// Checkpoint state: skin, flags, build references and carried histories (the cell
   /// grid is rebuilt at every build and is not part of it).
@@ -120,6 +123,7 @@ private:
   std::vector<Index> old_of_;             // this build's sort: new index k was old_of_[k]
   bool permuted_ = false;                 // this build sorted the storage
   bool carry_ready_ = false;              // the last lists were built here (not read or imported)
+  StepProfile* profile_ = nullptr;
   std::vector<HistoryEntry> pair_archive_, wall_archive_;
   /// Entries of lower id k: pair_archive_[start[k] .. start[k+1]) (k beyond: none).
   std::vector<std::uint32_t> pair_archive_start_;

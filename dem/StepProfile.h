@@ -12,7 +12,9 @@
 //   shared   pass B1, the gather of the shared bodies;
 //   bodies   pass B2, every body's row and its closing kick;
 //   finish   the serial sums after the region (kick losses, energy, the walls' records);
-//   other    the rest of step() (walls moved, the rebuild test, counters).
+//   other    the rest of step() (walls moved, the rebuild test, counters);
+// the rebuild's own parts (build_seconds: the histories kept, the cell grid, the sort, the
+// pair lists, the gather index, the wall lists, the references);
 // and, per thread, the seconds it spent in pass A's pair blocks, whose spread is the pair
 // pass's imbalance (pairs - mean busy time is what the others waited). Timing costs two
 // clock reads per stage per step; without a profile (the default) nothing is timed.
@@ -33,6 +35,11 @@ struct StepProfile
     {"sweep", "rebuild", "setup", "rows", "pairs", "walls", "shared", "bodies", "finish", "other"}};
 
   std::array<double, n_phases> seconds{};  ///< accumulated wall-clock seconds per phase
+  /// The rebuild's parts (NeighbourSearch::rebuild), accumulated seconds.
+  enum BuildPart : std::size_t { keep, grid, sort, pair_lists, gather_index, wall_lists, references, n_build_parts };
+  static constexpr std::array<const char*, n_build_parts> build_part_names{
+    {"keep", "grid", "sort", "pair_lists", "gather_index", "wall_lists", "references"}};
+  std::array<double, n_build_parts> build_seconds{};
   std::vector<double> pair_busy;           ///< per thread: seconds in its pair blocks
   std::size_t steps = 0;                   ///< steps profiled
   std::size_t shared_bodies = 0;           ///< bodies pass B1 gathered at the last step (LoadScatter.h)
