@@ -358,7 +358,9 @@ void NeighbourSearch::build_pairs(const ParticleStore& store, ContactLists& list
   for (std::size_t a = 0; a < n; ++a) run_start_[a + 1] += run_start_[a];
   const std::size_t n_pairs = run_start_[n];
   const bool memory = lists.with_memory;
+  // Grown by an eighth when short (resize alone would double the capacity).
   if (lists.pairs.capacity() < n_pairs) lists.pairs.reserve(n_pairs + n_pairs / 8);
+  if (lists.pair_loads.capacity() < n_pairs) lists.pair_loads.reserve(n_pairs + n_pairs / 8);
   lists.pairs.resize(n_pairs);
   lists.pair_memory.resize(memory ? n_pairs : 0);
   lists.pair_loads.resize(n_pairs);
@@ -400,6 +402,7 @@ void NeighbourSearch::build_incident(ContactLists& lists, int threads)
   off.resize(n + 1);
   off[0] = 0;
   for (std::size_t p = 0; p < n; ++p) off[p + 1] = off[p] + cursor[p] + (run_start_[p + 1] - run_start_[p]);
+  if (lists.incident.capacity() < 2 * n_pairs) lists.incident.reserve(2 * n_pairs + n_pairs / 4);
   lists.incident.resize(2 * n_pairs);
   std::uint32_t* const inc = lists.incident.data();
 #pragma omp parallel num_threads(threads)
@@ -443,6 +446,7 @@ void NeighbourSearch::build_walls(const ParticleStore& store, const std::vector<
     off[p + 1] = c;
   }
   for (std::size_t p = 0; p < n; ++p) off[p + 1] += off[p];
+  if (lists.wall_loads.capacity() < off[n]) lists.wall_loads.reserve(off[n] + off[n] / 8);
   lists.walls.resize(off[n]);
   lists.wall_memory.resize(memory ? off[n] : 0);
   lists.wall_loads.resize(off[n]);
