@@ -531,7 +531,7 @@ template <class Law, bool Track>
 double ContactPass::run_profiled(const Law& law, const ContactPassInput& in, const ForceRequest& request)
 {
   StepProfile& profile = *in.profile;
-  PhaseClock clock(&profile);
+  PhaseClock clock(profile.seconds.data());
   if (profile.pair_busy.size() < std::size_t(in.threads)) profile.pair_busy.resize(std::size_t(in.threads), 0.0);
   Stages<Law, Track> s(*this, law, in, request);
   s.prepare_batches();

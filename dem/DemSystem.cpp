@@ -264,7 +264,7 @@ double DemSystem::fire_velocities(double alpha) { return integrator_.fire_veloci
 void DemSystem::step()
 {
   if (!(dt_ > 0.0)) throw std::logic_error("DemSystem::step: time step not set");
-  PhaseClock clock(profile_);
+  PhaseClock clock(profile_ ? profile_->seconds.data() : nullptr);
   prepare();
   walls_.remember_forces();
   if (integrator_.overdamped() > 0.0 && !clumps_.empty())

@@ -51,24 +51,6 @@ void release(std::vector<T>& v)
 {
   std::vector<T>().swap(v);
 }
-
-/// PhaseClock for the rebuild's parts.
-class BuildClock
-{
-public:
-  explicit BuildClock(StepProfile* p) : profile_(p), last_(p ? PhaseClock::now() : 0.0) {}
-  void mark(StepProfile::BuildPart part)
-  {
-    if (!profile_) return;
-    const double t = PhaseClock::now();
-    profile_->build_seconds[part] += t - last_;
-    last_ = t;
-  }
-
-private:
-  StepProfile* profile_;
-  double last_;
-};
 }  // namespace
 
 void NeighbourSearch::set_reach(double r)
@@ -261,7 +243,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   // (1) Histories: straight from the last build's slots while the particles are the same
   // ones in the same storage (the usual case), else archived by stable key, before any
   // index changes (checkpoint imports, particles added or removed).
-  BuildClock clock(profile_);
+  PhaseClock clock(profile_ ? profile_->build_seconds.data() : nullptr);
   const bool direct = !imported_ && same_particles(store, lists, threads);
   if (!direct && !imported_) archive(store, lists);
   imported_ = false;

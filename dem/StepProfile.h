@@ -53,28 +53,28 @@ struct StepProfile
   }
 };
 
-/// Adds the wall-clock time since its last mark to a phase of a profile; reads no clock
-/// without one.
+/// Adds the wall-clock time since its last mark to one of an array of accumulated seconds
+/// (StepProfile::seconds or build_seconds); reads no clock without one.
 class PhaseClock
 {
 public:
-  explicit PhaseClock(StepProfile* profile) : profile_(profile), last_(profile ? now() : 0.0) {}
-  void mark(StepProfile::Phase phase)
+  explicit PhaseClock(double* seconds) : seconds_(seconds), last_(seconds ? now() : 0.0) {}
+  void mark(std::size_t phase)
   {
-    if (!profile_) return;
+    if (!seconds_) return;
     const double t = now();
-    profile_->seconds[phase] += t - last_;
+    seconds_[phase] += t - last_;
     last_ = t;
   }
   /// Starts anew without adding (after a phase another clock timed).
   void restart()
   {
-    if (profile_) last_ = now();
+    if (seconds_) last_ = now();
   }
   static double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 private:
-  StepProfile* profile_;
+  double* seconds_;
   double last_;
 };
 
