@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Statically linked copies of the DEM benchmarks, for a machine that has none of the
 # project's libraries (the many-core machine of issue 36: no deal.II, no HDF5, no OpenMP
-# runtime): geocomp-dem-bench, geocomp-bench-ceiling (if this build has it) and
+# runtime): geocomp-dem-bench, geocomp-bench-ceiling and
 # geocomp-bench-s0 (S0's isochoric program, docs/dem.md "Many cores"). It builds the three
 # targets in the build folder (GEOCOMP_BUILD_DIR, default build/), links each object file
 # with the libraries' .a files, `-static` and OpenMP (the whole of libpthread, which a static
@@ -24,8 +24,7 @@ mkdir -p "$1"
 out=$(realpath "$1")
 hdf5=/usr/lib/x86_64-linux-gnu/hdf5/serial
 
-targets=(geocomp-dem-bench geocomp-bench-s0)
-[ -f "$root/bench/thread_ceiling.cpp" ] && targets+=(geocomp-bench-ceiling)
+targets=(geocomp-dem-bench geocomp-bench-s0 geocomp-bench-ceiling)
 nice -n 19 cmake --build "$build" -j1 --target "${targets[@]}"
 
 openmp=(-fopenmp -Wl,--whole-archive -lpthread -Wl,--no-whole-archive)
@@ -35,14 +34,11 @@ c++ -O3 -static bench/CMakeFiles/geocomp-dem-bench.dir/dem_bench.cpp.o "${dem[@]
   -o "$out/geocomp-dem-bench"
 c++ -O3 -static bench/CMakeFiles/geocomp-bench-s0.dir/s0_run.cpp.o dem/program/libgeocomp_dem_program.a \
   "${dem[@]}" "$hdf5/libhdf5.a" -lsz -laec -lz -ldl -lm "${openmp[@]}" -o "$out/geocomp-bench-s0"
-if [ -f "$root/bench/thread_ceiling.cpp" ]; then
-  c++ -O3 -static bench/CMakeFiles/geocomp-bench-ceiling.dir/thread_ceiling.cpp.o "${openmp[@]}" \
-    -o "$out/geocomp-bench-ceiling"
-fi
+c++ -O3 -static bench/CMakeFiles/geocomp-bench-ceiling.dir/thread_ceiling.cpp.o "${openmp[@]}" \
+  -o "$out/geocomp-bench-ceiling"
 
 # Each copy is static and starts (a bad argument: exit 2, nothing run).
 for exe in "$out"/geocomp-dem-bench "$out"/geocomp-bench-s0 "$out"/geocomp-bench-ceiling; do
-  [ -f "$exe" ] || continue
   if ldd "$exe" >/dev/null 2>&1; then
     echo "$0: $exe is not static" >&2
     exit 1
