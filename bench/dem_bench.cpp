@@ -12,28 +12,18 @@
 // Usage: geocomp-dem-bench FILE.xyzr THREADS [N_EQ N_TIMED]
 // Prints diagnostics, a memory line, and last a line ending "ns/particle-step: X".
 #include "bench/BenchLaw.h"
+#include "bench/PeakResident.h"
 #include "dem/specimen/Packing.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <string>
 
 using namespace geocomp::dem;
 
-namespace {
-/// The process's peak resident memory (Linux: VmHWM in /proc/self/status), 0 elsewhere.
-double peak_resident_mb()
-{
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
-  return 0.0;
-}
-}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -95,7 +85,7 @@ int main(int argc, char** argv)
               n, threads, sys.n_rebuilds() - rebuilds0, double(sys.contact_lists().pairs.size()) / double(n), z_mean,
               e.kinetic(), sys.batched_pairs() ? 1 : 0, sys.prefetching() ? 1 : 0);
   std::printf("geocomp N=%zu threads=%d bytes/particle: %.0f peak_resident_MB: %.0f\n", n, threads,
-              double(sys.memory_bytes()) / double(n), peak_resident_mb());
+              double(sys.memory_bytes()) / double(n), geocomp::bench::peak_resident_mb());
   if (profile.steps > 0) {
     std::printf("geocomp N=%zu threads=%d profile us/step:", n, threads);
     for (std::size_t k = 0; k < StepProfile::n_phases; ++k)

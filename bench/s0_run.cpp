@@ -20,6 +20,7 @@
 // N as a case file with these values: the same specimen and response bit for bit.
 // Usage: geocomp-bench-s0 N THREADS [GAMMA_MAX] [--packing FILE.xyzr]. Bad arguments exit
 // 2 before anything runs; a run that stops mid-way exits 1 and says why. Writes no files.
+#include "bench/PeakResident.h"
 #include "common/ProgramRunner.h"
 #include "common/Tensor.h"
 #include "dem/program/DemEngine.h"
@@ -29,7 +30,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <utility>
@@ -44,15 +44,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-/// The process's peak resident memory (Linux: VmHWM in /proc/self/status), 0 elsewhere.
-double peak_resident_mb()
-{
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0)
-      return std::atof(line.c_str() + 6) / 1024.0;
-  return 0.0;
-}
 
 struct Arguments
 {
@@ -297,7 +288,7 @@ int main(int argc, char **argv)
               seconds_since(t_shear), static_cast<unsigned long long>(s.n_steps() - steps0),
               s.n_rebuilds() - rebuilds0, r.samples, r.branches, s.num_threads());
   std::printf("memory: %.0f bytes/particle (DemSystem::memory_bytes), peak_resident_MB %.0f\n",
-              double(s.memory_bytes()) / double(s.n_particles()), peak_resident_mb());
+              double(s.memory_bytes()) / double(s.n_particles()), bench::peak_resident_mb());
   std::printf("total: %.2f s wall, N=%zu threads=%d status=%s\n", seconds_since(start), s.n_particles(),
               s.num_threads(), r.status.c_str());
   if (!r.complete) {
