@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libdeal.ii-dev libeigen3-dev libhdf5-openmpi-dev hdf5-tools openmpi-bin
-  libgtest-dev libgmock-dev libbenchmark-dev libceres-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libceres-dev nlohmann-json3-dev libcli11-dev libspdlog-dev
   gnuplot-nox clang libclang-rt-14-dev chromium
 )
 missing=()

@@ -1,6 +1,7 @@
 // `geocomp calibrate <case>`: fit the continuum section to the case's target curves
 // (compare/calibrate, docs/calibration.md), optionally verified on the FE cube.
 #include "CaseValidation.h"
+#include "Log.h"
 #include "Commands.h"
 #include "Engines.h"
 #include "OutputFolderLock.h"
@@ -105,7 +106,7 @@ Command calibrate_command()
         }
       }
     } catch (const CaseError &e) {
-      std::cerr << "error: " << e.what() << "\n";
+      log::error(e.what());
       return static_cast<int>(bad_input);
     }
     const fs::path out = a.has("output") ? fs::path(a.get("output")) : fs::path(c.output.directory);
@@ -114,7 +115,7 @@ Command calibrate_command()
     try {
       lock = std::make_unique<OutputFolderLock>(out, c.file, a.has("output") ? "--output" : "output/directory");
     } catch (const CaseError &e) {
-      std::cerr << "error: " << e.what() << "\n";
+      log::error(e.what());
       return static_cast<int>(bad_input);
     }
     try {
@@ -129,7 +130,7 @@ Command calibrate_command()
       for (const FixedParameter &f : r.fixed)
         std::cout << "  " << f.name << " = " << f.value << "  (fixed: the case's value)\n";
       for (const auto &w : r.warnings)
-        std::cerr << "warning: " << c.file << ": calibration/free parameters: " << w << "\n";
+        log::warning(c.file + ": calibration/free parameters: " + w);
       std::vector<Verification> verification;
       if (a.has("verify")) {
         ensure_mpi();
@@ -144,10 +145,10 @@ Command calibrate_command()
                 << (dir / "index.html").string() << "\n";
       return static_cast<int>(ok);
     } catch (const CalibrationError &e) {
-      std::cerr << "error: " << c.file << ": parameter '" << e.parameter << "': " << e.what() << "\n";
+      log::error(c.file + ": parameter '" + e.parameter + "': " + e.what());
       return static_cast<int>(bad_input);
     } catch (const std::exception &e) {
-      std::cerr << "run failed: " << e.what() << "\n";
+      log::error(std::string("run failed: ") + e.what());
       return static_cast<int>(run_failure);
     }
   };

@@ -1,5 +1,6 @@
 // `geocomp check` and `geocomp print-parameters`: the case file, without running anything.
 #include "CaseValidation.h"
+#include "Log.h"
 #include "Commands.h"
 
 #include "compare/case/CaseDescription.h"
@@ -62,7 +63,7 @@ Command check_command()
       std::cout << "  output: " << d.output.directory << "\n";
       return static_cast<int>(ok);
     } catch (const CaseError &e) {
-      std::cerr << "error: " << e.what() << "\n";
+      log::error(e.what());
       return static_cast<int>(bad_input);
     }
   };

@@ -1,5 +1,6 @@
 // See CaseValidation.h: each engine's refusals, before any engine runs.
 #include "CaseValidation.h"
+#include "Log.h"
 
 #include "Engines.h"
 
@@ -44,6 +45,11 @@ CaseDescription read_valid_case(const std::string &path, const std::vector<std::
 {
   CaseDescription c = read_case(path);
   validate_engines(c, also);
+  std::string engines;
+  for (const std::string &e : c.engines)
+    engines += " " + e;
+  log::debug("case " + c.file + " read and validated: engines" + engines + ", " +
+             std::to_string(c.program.stages.size()) + " stage(s), output folder " + c.output.directory);
   return c;
 }
 

@@ -1,6 +1,7 @@
 // `geocomp crush`: S2's particle-breakage programs (single-particle crushing, uniaxial
 // compression with cube, 4-ball or 18-ball fragment replacement).
 #include "Commands.h"
+#include "Log.h"
 #include "OutputFolderLock.h"
 
 #include "common/AtomicFile.h"
@@ -38,7 +39,7 @@ Command crush_command()
     try {
       cc = dem::read_crush_case(a.positional[0]);
     } catch (const CaseError &e) {
-      std::cerr << "error: " << e.what() << "\n";
+      log::error(e.what());
       return static_cast<int>(bad_input);
     }
     if (a.has("check")) {
@@ -86,9 +87,9 @@ Command crush_command()
       }
       for (const std::string &line : r.summary)
         std::cout << line << "\n";
-      std::cout << "wrote " << base.string() << (r.polar.empty() ? "_*.tsv\n" : "_*.tsv, _polar_*.svg\n");
+      log::info("wrote " + base.string() + (r.polar.empty() ? "_*.tsv" : "_*.tsv, _polar_*.svg"));
     } catch (const std::exception &e) {
-      std::cerr << "error: crush failed: " << e.what() << "\n";
+      log::error(std::string("crush failed: ") + e.what());
       return static_cast<int>(run_failure);
     }
     return static_cast<int>(ok);

@@ -1,4 +1,5 @@
 #include "Engines.h"
+#include "Log.h"
 #include "Progress.h"
 #include "CaseValidation.h"
 
@@ -64,18 +65,20 @@ std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const 
     try {
       auto e = dem::DemEngine::from_checkpoint(cache, p);
       e->set_num_threads(int(c.dem.threads)); // not in the record (same bits for any count)
-      std::cout << "dem: prepared specimen reused: " << cache.string() << "\n";
+      log::info("dem: prepared specimen reused: " + cache.string());
       return e;
     } catch (const std::exception &) {
       // Unreadable cache: prepare again.
     }
   }
-  std::cout << "dem: preparing the specimen (" << c.specimen.particles << " spheres, sigma_0 = "
-            << c.specimen.isotropic_pressure << " Pa)\n";
+  std::ostringstream what;
+  what << "dem: preparing the specimen (" << c.specimen.particles << " spheres, sigma_0 = "
+       << c.specimen.isotropic_pressure << " Pa)";
+  log::info(what.str());
   PhasePrinter phases("dem");
   dem::PreparedSpecimen s = dem::prepare_specimen(c, {}, std::ref(phases));
   phases.finish();
-  std::cout << "dem: specimen: " << s.record.describe() << "\n";
+  log::info("dem: specimen: " + s.record.describe());
   auto e = std::make_unique<dem::DemEngine>(std::move(s.system), p);
   fs::create_directories(dir);
   e->write_checkpoint(cache);
@@ -130,6 +133,7 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
                                            const std::string &output_dir, MPI_Comm communicator)
 {
   validate_engine(name, c);
+  log::debug(name + ": setting up the engine of " + c.file);
   if (name == "material-point")
     return std::make_unique<continuum::MaterialPointEngine>(continuum_material(c), material_point_parameters(c));
   if (name == "continuum")

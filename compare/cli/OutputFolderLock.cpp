@@ -1,5 +1,6 @@
 // See OutputFolderLock.h: flock() on <folder>/.geocomp.lock, the holder named from its text.
 #include "OutputFolderLock.h"
+#include "Log.h"
 
 #include <cerrno>
 #include <cstring>
@@ -99,13 +100,14 @@ OutputFolderLock::OutputFolderLock(const fs::path &dir, const std::string &file_
   }
   const std::string stale = holder_of(fd_);
   if (!stale.empty()) {
-    warning_ = "warning: output folder " + name + ": took over the lock left by " + stale +
-               ", which no longer holds it (the run ended without removing it)";
-    std::cerr << warning_ << "\n";
+    const std::string text = "output folder " + name + ": took over the lock left by " + stale +
+                             ", which no longer holds it (the run ended without removing it)";
+    warning_ = "warning: " + text;
+    log::warning(text);
   }
   const std::string text = this_holder() + "\n";
   if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, text.data(), text.size(), 0) != ssize_t(text.size()))
-    std::cerr << "warning: output folder " << name << ": cannot write the lock file " << file.string() << "\n";
+    log::warning("output folder " + name + ": cannot write the lock file " + file.string());
 }
 
 OutputFolderLock::~OutputFolderLock()

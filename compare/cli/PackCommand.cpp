@@ -1,5 +1,6 @@
 // `geocomp pack`: builds a case's specimen (S0 radius growth + consolidation) into a core store.
 #include "CaseValidation.h"
+#include "Log.h"
 #include "Commands.h"
 #include "OutputFolderLock.h"
 #include "Progress.h"
@@ -8,6 +9,7 @@
 #include "dem/program/SpecimenPreparation.h"
 #include "dem/program/SpecimenStore.h"
 
+#include <sstream>
 #include <filesystem>
 #include <iostream>
 
@@ -63,20 +65,21 @@ Command pack_command()
         throw CaseError(d.file, "specimen/store file", e.what());
       }
     }
-    std::cout << "pack: " << d.specimen.particles << " spheres, eta = " << d.specimen.packing_fraction
-              << ", sigma_0 = " << d.specimen.isotropic_pressure << " Pa"
-              << (d.specimen.aristotelian ? " (Aristotelian growth)" : "") << " -> " << store.string() << " : "
-              << name << "\n";
+    std::ostringstream what;
+    what << "pack: " << d.specimen.particles << " spheres, eta = " << d.specimen.packing_fraction
+         << ", sigma_0 = " << d.specimen.isotropic_pressure << " Pa"
+         << (d.specimen.aristotelian ? " (Aristotelian growth)" : "") << " -> " << store.string() << " : " << name;
+    log::info(what.str());
     PhasePrinter phases("pack");
     dem::PreparedSpecimen s = dem::prepare_specimen(d, {}, std::ref(phases));
     phases.finish();
-    std::cout << "pack: " << s.record.describe() << "\n";
+    log::info("pack: " + s.record.describe());
     try {
       dem::write_stored_specimen(store, name, s, dem::SpecimenMetadata::from_case(d, s));
     } catch (const dem::StoreError &e) {
       throw CaseError(d.file, "specimen/store file", e.what());
     }
-    std::cout << "pack: stored '" << name << "' in " << store.string() << "\n";
+    log::info("pack: stored '" + name + "' in " + store.string());
     return static_cast<int>(ok);
   };
   return c;

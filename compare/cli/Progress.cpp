@@ -1,4 +1,5 @@
 #include "Progress.h"
+#include "Log.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -50,6 +51,8 @@ double seconds_between(std::chrono::steady_clock::time_point a, std::chrono::ste
 
 void ProgressPrinter::operator()(const RunProgress &p)
 {
+  if (!log::progress_shown())
+    return;
   const auto now = std::chrono::steady_clock::now();
   const double elapsed = seconds_between(start_, now);
   if (p.branch != branch_) {
@@ -102,6 +105,8 @@ PhasePrinter::PhasePrinter(std::string engine, double log_interval_seconds, std:
 
 void PhasePrinter::operator()(const std::string &phase, double dem_time, double fraction)
 {
+  if (!log::progress_shown())
+    return;
   const auto now = std::chrono::steady_clock::now();
   const bool new_phase = phase != phase_;
   if (new_phase) {

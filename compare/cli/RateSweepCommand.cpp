@@ -1,5 +1,6 @@
 // `geocomp rate-sweep`: S1's dynamic uniaxial tests over a range of strain rates.
 #include "Commands.h"
+#include "Log.h"
 #include "OutputFolderLock.h"
 
 #include "continuum/dynamics/RateSweepCase.h"
@@ -34,7 +35,7 @@ Command rate_sweep_command()
     try {
       rc = dynamics::read_rate_sweep_case(a.positional[0]);
     } catch (const CaseError &e) {
-      std::cerr << "error: " << e.what() << "\n";
+      log::error(e.what());
       return static_cast<int>(bad_input);
     }
     if (a.has("check")) {
@@ -59,9 +60,9 @@ Command rate_sweep_command()
       dynamics::write_rate_sweep_tsv(base + ".tsv", rc.setup, rows);
       dynamics::write_rate_sweep_svg(base + ".svg", rc.setup, rows);
       dynamics::write_rate_sweep_gnuplot(base + ".gp", stem + ".tsv", rc.setup);
-      std::cout << "wrote " << base << ".tsv, .svg, .gp\n";
+      log::info("wrote " + std::string(base) + ".tsv, .svg, .gp");
     } catch (const std::exception &e) {
-      std::cerr << "error: rate sweep failed: " << e.what() << "\n";
+      log::error(std::string("rate sweep failed: ") + e.what());
       return static_cast<int>(run_failure);
     }
     return static_cast<int>(ok);

@@ -2,6 +2,7 @@
 // every engine the case names (reusing up-to-date results), compares and reports;
 // `geocomp compare <dir>` and `geocomp report <dir>` work on existing results.
 #include "CaseValidation.h"
+#include "Log.h"
 #include "Commands.h"
 #include "Engines.h"
 #include "OutputFolderLock.h"
@@ -238,12 +239,12 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
   const fs::path file = dir / results_file(engine);
   if (reuse && up_to_date(file, c)) {
     if (rank() == 0)
-      std::cout << engine << ": up-to-date results reused: " << file.string() << "\n";
+      log::info(engine + ": up-to-date results reused: " + file.string());
     return read_response(file);
   }
   if (engine == "dem" && rank() == 0)
     for (const std::string &unused : dem::ignored_specimen_entries(c))
-      std::cerr << "warning: " << unused << "\n";
+      log::warning(unused);
   std::unique_ptr<LoadingEngine> e = make_engine(engine, c, dir.string(), engine_comm);
   ProgramRunner runner(c.program, *e);
   ProgressPrinter progress(engine);
@@ -283,8 +284,10 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
   bool failed = false;
   try {
     if (resumed) {
-      std::cout << engine << ": resuming from " << checkpoint.string() << " at t = " << resumed->runner.time
-                << " s (" << resumed->runner.response.samples.size() << " samples)\n";
+      std::ostringstream what;
+      what << engine << ": resuming from " << checkpoint.string() << " at t = " << resumed->runner.time << " s ("
+           << resumed->runner.response.samples.size() << " samples)";
+      log::info(what.str());
       if (snapshots)
         snapshots->resume(resumed->runner.time, static_cast<unsigned int>(resumed->counter));
       e->restore(*resumed->current);
@@ -323,11 +326,12 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
     meta.parameters = parameters_text(c);
     if (engine == "dem")
       meta.specimen_record = dem::specimen_record(c, GEOCOMP_GIT_HASH);
+    log::debug(engine + ": writing " + file.string() + " (status " + status + ")");
     write_response(file, r, meta);
-    std::cout << engine << ": " << r.samples.size() << " samples, " << r.branches.size()
-              << " unloading branches -> " << file.string() << "\n";
+    log::info(engine + ": " + std::to_string(r.samples.size()) + " samples, " + std::to_string(r.branches.size()) +
+              " unloading branches -> " + file.string());
     if (!failed && status != "complete")
-      std::cerr << "warning: " << engine << ": " << status << "\n";
+      log::warning(engine + ": " + status);
   }
   if (failed)
     throw std::runtime_error(engine + " " + status + "; the samples recorded so far are in " + file.string());
@@ -421,9 +425,9 @@ int write_and_say(const compare::ReportInput &in, const fs::path &dir)
   if (rank() != 0)
     return ok;
   const compare::ReportOutcome out = compare::write_report(in, dir / "report");
-  std::cout << "report: " << (out.dir / "index.html").string() << "\n";
+  log::info("report: " + (out.dir / "index.html").string());
   if (!out.plots_made)
-    std::cout << "  (" << out.message << ")\n";
+    log::info("  (" + out.message + ")");
   return ok;
 }
 
@@ -462,12 +466,12 @@ int guarded(const std::function<int()> &body)
   try {
     return body();
   } catch (const CaseError &e) {
-    std::cerr << "error: " << e.what() << "\n";
+    log::error(e.what());
     return bad_input;
   } catch (const UsageError &) {
     throw;
   } catch (const std::exception &e) {
-    std::cerr << "run failed: " << e.what() << "\n";
+    log::error(std::string("run failed: ") + e.what());
     return run_failure;
   }
 }
@@ -573,7 +577,7 @@ Command sweep_command()
       for (const auto &f : a.positional)
         cases.push_back(read_valid_case(f));
     } catch (const CaseError &e) {
-      std::cerr << "error: " << e.what() << "\n";
+      log::error(e.what());
       return static_cast<int>(bad_input);
     }
     ensure_mpi();
@@ -587,8 +591,8 @@ Command sweep_command()
         const OutputFolderLock lock(cases[k].output.directory, cases[k].file, "output/directory");
         return pair_case(cases[k], cases[k].output.directory, !a.has("force"));
       });
-      std::cout << "sweep: rank " << world_rank << " case " << cases[k].file << ": "
-                << (code == ok ? "done" : "FAILED") << " -> " << cases[k].output.directory << "\n";
+      log::info("sweep: rank " + std::to_string(world_rank) + " case " + cases[k].file + ": " +
+                (code == ok ? "done" : "FAILED") + " -> " + cases[k].output.directory);
       failures += code != ok;
     }
     engine_comm = MPI_COMM_WORLD;

@@ -7,6 +7,7 @@
 // <DIR>/<case>.tsv (one row per output step, compression positive) and
 // <DIR>/<case>-summary.txt (peak mu_b, max contraction, final dilation, costs).
 #include "Commands.h"
+#include "Log.h"
 #include "OutputFolderLock.h"
 
 #include "common/AtomicFile.h"
@@ -49,7 +50,7 @@ Command shear_box_command()
     try {
       sc = dem::read_shear_box_case(a.positional[0]);
     } catch (const CaseError& e) {
-      std::cerr << "error: " << e.what() << "\n";
+      log::error(e.what());
       return static_cast<int>(bad_input);
     }
     const double I = 0.1 * sc.p.shear_speed * std::sqrt(sc.p.clumps.density / sc.p.normal_stress);
@@ -126,7 +127,7 @@ Command shear_box_command()
       write_atomically(base + "-summary.txt", [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << sum.str(); });
       std::cout << sum.str() << "wrote " << base << ".tsv, " << base << "-summary.txt\n";
     } catch (const std::exception& e) {
-      std::cerr << "error: shear box failed: " << e.what() << "\n";
+      log::error(std::string("shear box failed: ") + e.what());
       return static_cast<int>(run_failure);
     }
     return static_cast<int>(ok);

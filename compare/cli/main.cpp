@@ -1,13 +1,17 @@
 // geocomp: DEM and elastoplastic continuum runs of one loading program, compared.
 #include "Commands.h"
+#include "Log.h"
 
 #include "common/Version.h"
 #include "common/case/CaseParameters.h"
 
 #include <deal.II/base/mpi.h>
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <iostream>
 
 namespace geocomp::cli {
@@ -37,59 +41,63 @@ void print_help(std::ostream &out)
     out << "  " << c.name << std::string(c.name.size() < 18 ? 18 - c.name.size() : 1, ' ') << c.summary << "\n";
   out << "\nexit codes: 0 success, 1 run failure (results so far written, /meta/status says why; also a stage\n"
          "            ended by its max duration before its stop condition), 2 bad input\n"
+      << "options of every command: -q, --quiet (warnings and errors only, no progress display),\n"
+         "            -v, --verbose (also details: case read, engine set-up, files written)\n"
       << "units: SI; stresses tension positive inside the code and in results files\n";
 }
 } // namespace
 
-Arguments Arguments::parse(const std::vector<std::string> &args, const std::vector<std::string> &valued,
-                           const std::vector<std::string> &flags)
+namespace {
+
+/// The subcommand and its own arguments, parsed by CLI11 (each command parses the rest,
+/// Arguments.cpp); none with the exit code when the line is help, version or malformed.
+struct Dispatch {
+  const Command *command = nullptr;
+  std::vector<std::string> rest;
+};
+
+std::optional<Dispatch> dispatch(const std::vector<std::string> &args, int &code)
 {
-  Arguments a;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string &s = args[i];
-    if (s.rfind("--", 0) != 0 || s == "--") {
-      a.positional.push_back(s);
-      continue;
-    }
-    std::string name = s.substr(2), value;
-    const auto eq = name.find('=');
-    const bool inline_value = eq != std::string::npos;
-    if (inline_value) {
-      value = name.substr(eq + 1);
-      name = name.substr(0, eq);
-    }
-    if (std::find(valued.begin(), valued.end(), name) != valued.end()) {
-      if (!inline_value) {
-        if (i + 1 >= args.size())
-          throw UsageError("option --" + name + " expects a value");
-        value = args[++i];
-      }
-      a.options.emplace_back(name, value);
-    } else if (std::find(flags.begin(), flags.end(), name) != flags.end() && !inline_value) {
-      a.options.emplace_back(name, "");
-    } else {
-      throw UsageError("unknown option --" + name);
-    }
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    print_help(std::cout);
+    code = args.empty() ? bad_input : ok;
+    return std::nullopt;
   }
-  return a;
+  CLI::App app("DEM and Mohr-Coulomb continuum runs of one loading program", "geocomp");
+  app.set_help_flag(); // print_help: the commands with their summaries and the exit codes
+  bool version = false, quiet = false, verbose = false;
+  app.add_flag("--version", version);
+  app.add_flag("-q,--quiet", quiet);     // also accepted after the command (Arguments.cpp)
+  app.add_flag("-v,--verbose", verbose);
+  app.require_subcommand(0, 1);
+  for (const auto &c : commands())
+    app.add_subcommand(c.name, c.summary)->prefix_command(); // the command parses the rest
+  std::vector<std::string> reversed(args.rbegin(), args.rend());
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ParseError &e) {
+    std::cerr << "geocomp: unknown command '" << args[0] << "'\n\n";
+    print_help(std::cerr);
+    code = bad_input;
+    return std::nullopt;
+  }
+  if (quiet || verbose)
+    log::set_verbosity(quiet ? log::Verbosity::quiet : log::Verbosity::verbose);
+  if (version || app.get_subcommands().empty()) {
+    std::cout << "geocomp " << GEOCOMP_VERSION << " (git " << GEOCOMP_GIT_HASH << ")\n";
+    code = ok;
+    return std::nullopt;
+  }
+  const CLI::App *sub = app.get_subcommands().front();
+  Dispatch d;
+  for (const auto &c : commands())
+    if (c.name == sub->get_name())
+      d.command = &c;
+  d.rest = sub->remaining();
+  return d;
 }
 
-bool Arguments::has(const std::string &name) const
-{
-  for (const auto &[n, v] : options)
-    if (n == name)
-      return true;
-  return false;
-}
-
-std::string Arguments::get(const std::string &name, const std::string &fallback) const
-{
-  for (const auto &[n, v] : options)
-    if (n == name)
-      return v;
-  return fallback;
-}
-
+} // namespace
 } // namespace geocomp::cli
 
 int main(int argc, char **argv)
@@ -102,39 +110,28 @@ int main(int argc, char **argv)
   for (const auto &a : args)
     line += " " + a;
   set_command_line(line);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    print_help(std::cout);
-    return args.empty() ? bad_input : ok;
-  }
-  if (args[0] == "--version") {
-    std::cout << "geocomp " << GEOCOMP_VERSION << " (git " << GEOCOMP_GIT_HASH << ")\n";
-    return ok;
-  }
-  for (const auto &c : commands()) {
-    if (c.name != args[0])
-      continue;
-    const std::vector<std::string> rest(args.begin() + 1, args.end());
-    for (const auto &a : rest)
-      if (a == "--help" || a == "-h") {
-        std::cout << c.usage;
-        return ok;
-      }
-    try {
-      const int code = c.run(rest);
-      finalize_mpi();
-      return code;
-    } catch (const UsageError &e) {
-      std::cerr << "geocomp " << c.name << ": " << e.what() << "\n\n" << c.usage;
-      return bad_input;
-    } catch (const geocomp::CaseError &e) {
-      std::cerr << "error: " << e.what() << "\n";
-      return bad_input;
-    } catch (const std::exception &e) {
-      std::cerr << "geocomp " << c.name << ": run failed: " << e.what() << "\n";
-      return run_failure;
+  int code = ok;
+  const std::optional<Dispatch> d = dispatch(args, code);
+  if (!d)
+    return code;
+  const Command &c = *d->command;
+  for (const auto &a : d->rest)
+    if (a == "--help" || a == "-h") {
+      std::cout << c.usage;
+      return ok;
     }
+  try {
+    code = c.run(d->rest);
+    finalize_mpi();
+    return code;
+  } catch (const UsageError &e) {
+    std::cerr << "geocomp " << c.name << ": " << e.what() << "\n\n" << c.usage;
+    return bad_input;
+  } catch (const geocomp::CaseError &e) {
+    log::error(e.what());
+    return bad_input;
+  } catch (const std::exception &e) {
+    log::error("geocomp " + c.name + ": run failed: " + e.what());
+    return run_failure;
   }
-  std::cerr << "geocomp: unknown command '" << args[0] << "'\n\n";
-  print_help(std::cerr);
-  return bad_input;
 }
