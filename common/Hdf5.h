@@ -2,6 +2,13 @@
 // Thin RAII layer over the HDF5 C API: files, groups, and the few dataset shapes
 // geocomp writes (1-D double/int arrays, n x 3 x 3 tensors, strings, attributes).
 // HDF5 does the storage; this only removes the handle bookkeeping from callers.
+// Why a wrapper of our own (issue 37 asks to keep it only if no packaged library serves):
+// the program must use the MPI build of HDF5 that deal.II links, and HDF5's own C++ API
+// (H5Cpp) is not supported by the HDF5 group together with a parallel build (its configure
+// refuses the pair unless forced with --enable-unsupported, as Debian does); HighFive is not
+// in Debian 12; and neither would spare the few shape helpers below (n x 3 x 3 tensors,
+// string lists, units attributes), which are most of this file. The layer is the C API's
+// RAII handle plus those helpers, 60 lines of interface.
 #include <hdf5.h>
 
 #include <filesystem>
