@@ -577,8 +577,8 @@ void ContactPass::WallGroups::plan(const ContactLists& lists, std::size_t n_wall
   for (const WallSlot& s : lists.walls) ++offset[s.wall + 1];
   for (std::size_t w = 0; w < n_walls; ++w) offset[w + 1] += offset[w];
   slots.resize(lists.walls.size());
-  std::vector<std::uint32_t> at(offset.begin(), offset.end() - 1);
-  for (std::size_t c = 0; c < lists.walls.size(); ++c) slots[at[lists.walls[c].wall]++] = std::uint32_t(c);
+  cursor.assign(offset.begin(), offset.end() - 1);
+  for (std::size_t c = 0; c < lists.walls.size(); ++c) slots[cursor[lists.walls[c].wall]++] = std::uint32_t(c);
 }
 
 std::size_t ContactPass::memory_bytes() const

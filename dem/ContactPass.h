@@ -95,6 +95,7 @@ private:
     bool planned = false;
     std::uint64_t generation = 0;
     std::vector<std::uint32_t> offset, slots;  // wall w: slots[offset[w] .. offset[w + 1])
+    std::vector<std::uint32_t> cursor;         // plan's fill position per wall (kept: no allocation)
     void plan(const ContactLists& lists, std::size_t n_walls, std::uint64_t generation);
   };
 

@@ -165,22 +165,29 @@ bool NeighbourSearch::same_particles(const ParticleStore& store, const ContactLi
   return same;
 }
 
-NeighbourSearch::Previous NeighbourSearch::keep_previous(ContactLists& lists, int threads)
+const NeighbourSearch::Previous* NeighbourSearch::keep_previous(ContactLists& lists, int threads)
 {
-  Previous prev;
   const std::size_t n_pairs = lists.pairs.size();
-  prev.pairs.reset(static_cast<PairSlot*>(std::malloc(std::max<std::size_t>(1, n_pairs) * sizeof(PairSlot))));
-  if (!prev.pairs) throw std::bad_alloc();
+  if (n_pairs > previous_.capacity || !previous_.pairs) {
+    // Grown by an eighth beyond the need, as the lists are: a specimen's rebuilds then reuse
+    // it (a fresh block per rebuild is a fresh set of pages the kernel zeroes each time).
+    const std::size_t capacity = std::max<std::size_t>(1, n_pairs + n_pairs / 8);
+    previous_.pairs.reset(static_cast<PairSlot*>(std::malloc(capacity * sizeof(PairSlot))));
+    previous_.capacity = previous_.pairs ? capacity : 0;
+    if (!previous_.pairs) throw std::bad_alloc();
+  }
   // Copied, not swapped: lists.pairs keeps its capacity (and its pages) for the new slots;
-  // the copy's pages are first touched by the threads that copy them.
+  // a new block's pages are first touched by the threads that copy into them.
   const PairSlot* const from = lists.pairs.data();
-  PairSlot* const to = prev.pairs.get();
+  PairSlot* const to = previous_.pairs.get();
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t k = 0; k < std::int64_t(n_pairs); ++k) std::memcpy(&to[k], &from[k], sizeof(PairSlot));
-  prev.run_start.swap(run_start_);
-  prev.walls.swap(lists.walls);
-  prev.wall_offset.swap(lists.wall_offset);
-  return prev;
+  // Swapped: the build refills run_start_, lists.walls and lists.wall_offset in the buffers
+  // the previous build's copies used (assign and resize keep their capacity).
+  previous_.run_start.swap(run_start_);
+  previous_.walls.swap(lists.walls);
+  previous_.wall_offset.swap(lists.wall_offset);
+  return &previous_;
 }
 
 void NeighbourSearch::carry_pair(PairSlot& s, const Previous* prev, const std::vector<ParticleId>& id) const
@@ -250,9 +257,7 @@ bool NeighbourSearch::rebuild(ParticleStore& store, const std::vector<PlaneWall>
   if (!direct) index_pair_archive();
   if (!memory_imported_) archive_memory(store, lists);
   memory_imported_ = false;
-  Previous kept;
-  if (direct) kept = keep_previous(lists, threads);
-  const Previous* const prev = direct ? &kept : nullptr;
+  const Previous* const prev = direct ? keep_previous(lists, threads) : nullptr;
   clock.mark(StepProfile::keep);
 
   const std::size_t n = store.size();
@@ -457,7 +462,9 @@ std::size_t NeighbourSearch::memory_bytes() const
          built_ids_.capacity() * sizeof(ParticleId) +
          (pair_archive_.capacity() + wall_archive_.capacity()) * sizeof(HistoryEntry) +
          (pair_memory_archive_.capacity() + wall_memory_archive_.capacity()) * sizeof(MemoryEntry) +
-         (broken_pairs_.capacity() + broken_walls_.capacity()) * sizeof(std::uint64_t);
+         (broken_pairs_.capacity() + broken_walls_.capacity()) * sizeof(std::uint64_t) +
+         previous_.capacity * sizeof(PairSlot) + previous_.walls.capacity() * sizeof(WallSlot) +
+         (previous_.run_start.capacity() + previous_.wall_offset.capacity()) * sizeof(std::uint32_t);
 }
 
 void NeighbourSearch::write_state(std::ostream& out) const

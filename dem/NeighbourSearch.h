@@ -83,14 +83,31 @@ private:
       void operator()(PairSlot* p) const { std::free(p); }
     };
     std::unique_ptr<PairSlot[], Free> pairs;
+    std::size_t capacity = 0;  ///< slots `pairs` holds room for
     std::vector<std::uint32_t> run_start;
     std::vector<WallSlot> walls;
     std::vector<std::uint32_t> wall_offset;
+    // Scratch of a build: a copied search (a saved DemSystem) starts with none.
+    Previous() = default;
+    Previous(const Previous&) {}
+    Previous& operator=(const Previous&)
+    {
+      pairs.reset();
+      capacity = 0;
+      run_start.clear();
+      walls.clear();
+      wall_offset.clear();
+      return *this;
+    }
+    Previous(Previous&&) = default;
+    Previous& operator=(Previous&&) = default;
   };
   /// True when `lists` are this object's last build for the same particles in the same
   /// storage (then the histories are carried from them directly).
   bool same_particles(const ParticleStore& store, const ContactLists& lists, int threads) const;
-  Previous keep_previous(ContactLists& lists, int threads);
+  /// The last build's slots, kept in previous_ (its buffers reused from build to build: no
+  /// allocation once they have grown to the specimen's size).
+  const Previous* keep_previous(ContactLists& lists, int threads);
   /// The storage index at the last build of the particle now at k.
   Index old_index(Index k) const { return permuted_ ? old_of_[k] : k; }
   /// The overlap and spring of slot s (its i and j set) from the kept slots, or from the
@@ -119,6 +136,7 @@ private:
   std::vector<Vec3> wall_ref_;
   std::vector<std::uint32_t> count_;      // scratch of the gather index
   std::vector<std::uint32_t> run_start_;  // particle a's pair slots: [run_start_[a], run_start_[a + 1])
+  Previous previous_;                     // the last build's slots while a build carries them
   std::vector<ParticleId> built_ids_;     // the ids in storage order at the last build
   std::vector<Index> old_of_;             // this build's sort: new index k was old_of_[k]
   bool permuted_ = false;                 // this build sorted the storage
