@@ -6,7 +6,6 @@ geocomp.Response (time, strain, log_strain, stress, stress_mean, volumetric_stra
 gamma_max, tau_max, mean_stress, stage, branch, extras), read into memory (h5py copies
 each dataset into a numpy array; the file is closed on return). SI units, tension positive.
 """
-import h5py
 import numpy
 
 _COLUMNS = ("time", "strain", "log_strain", "stress", "stress_mean", "volumetric_strain",
@@ -36,6 +35,8 @@ class Results:
     """
 
     def __init__(self, path):
+        import h5py  # here, so that `import geocomp` works where h5py is not installed
+
         self.path = str(path)
         with h5py.File(self.path, "r") as f:
             response = f["response"]

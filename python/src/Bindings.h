@@ -69,6 +69,10 @@ struct PyResponse {
   std::vector<std::vector<double>> extras; ///< aligned with response.extras
 };
 
+/// A Python value as case-file text: a str as it is, True/False as true/false, a number as
+/// Python writes it (the shortest text that reads back to the same double).
+std::string entry_text(const pybind11::handle &value);
+
 void bind_case(pybind11::module_ &m);
 void bind_response(pybind11::module_ &m);
 void bind_run(pybind11::module_ &m);

@@ -100,6 +100,13 @@ void PyCase::set(const std::string &path, const std::string &value)
   description_ = parse_case(text, file()); // CaseError: *this unchanged
 }
 
+std::string entry_text(const py::handle &value)
+{
+  if (py::isinstance<py::bool_>(value))
+    return value.cast<bool>() ? "true" : "false";
+  return py::isinstance<py::str>(value) ? value.cast<std::string>() : std::string(py::str(value));
+}
+
 void bind_case(py::module_ &m)
 {
   static py::exception<CaseError> case_error(m, "CaseError", PyExc_ValueError);
@@ -117,13 +124,8 @@ void bind_case(py::module_ &m)
     }
   });
 
-  // A value as case-file text: a str as it is, a number as Python writes it (the shortest
-  // text that reads back to the same double).
   const auto set_entry = [](PyCase &c, const std::string &path, const py::object &value) {
-    if (py::isinstance<py::bool_>(value))
-      c.set(path, value.cast<bool>() ? "true" : "false");
-    else
-      c.set(path, py::isinstance<py::str>(value) ? value.cast<std::string>() : std::string(py::str(value)));
+    c.set(path, entry_text(value));
   };
   py::class_<PyCase>(m, "Case", R"doc(A case file (.prm or .json) as the command line reads it.
 

@@ -84,6 +84,10 @@ continuum::Matrix3 matrix3(const py::array_t<double, py::array::c_style | py::ar
 }
 } // namespace
 
+/// The closed form and the onsets along a response (continuum/models/RudnickiRice.h,
+/// compare/LocalizationOnsets.h); bind_metrics() calls it.
+void bind_rudnicki_rice(py::module_ &m);
+
 void bind_metrics(py::module_ &m)
 {
   m.def(
@@ -105,6 +109,11 @@ peak_strain, peak_stress, softening_modulus, residual_stress, initial_modulus,
 secant_modulus, dilatancy_angle_deg, friction_peak_deg, friction_residual_deg,
 shear_modulus, bulk_modulus, branches, notes, ...)doc");
 
+  bind_rudnicki_rice(m);
+}
+
+void bind_rudnicki_rice(py::module_ &m)
+{
   m.def(
     "rudnicki_rice",
     [](double mu, double beta, double nu, double N) {

@@ -67,7 +67,11 @@ PyResponse run(const PyCase &c, const std::string &engine, const std::optional<s
   const std::string dir = output.value_or(d.output.directory);
   if (engine == "continuum")
     ensure_mpi();
-  std::unique_ptr<LoadingEngine> e = cli::make_engine(engine, d, dir); // validates first (CaseError)
+  std::unique_ptr<LoadingEngine> e;
+  {
+    py::gil_scoped_release released; // the DEM prepares its specimen here (seconds)
+    e = cli::make_engine(engine, d, dir); // validates first (CaseError)
+  }
   ProgramRunner runner(d.program, *e);
   std::optional<py::error_already_set> raised;
   if (progress)
@@ -128,7 +132,7 @@ in this process once (one rank; docs/python.md).)doc");
                  std::optional<py::function> progress) {
       PyCase changed = c;
       for (const auto &[path, value] : entries)
-        changed.set(path, py::isinstance<py::str>(value) ? value.cast<std::string>() : std::string(py::str(value)));
+        changed.set(path, entry_text(value));
       return run(changed, "material-point", std::nullopt, progress, error_type);
     },
     py::arg("case"), py::arg("entries") = std::map<std::string, py::object>{}, py::arg("progress") = py::none(),

@@ -47,6 +47,8 @@ class ACaseFile(unittest.TestCase):
         case.set("program/stage 1/lambda", 0.5)
         self.assertEqual(case.get("program/stage 1/lambda"), "0.5")
         self.assertIn("continuum/youngs modulus = 1.2e+08", case.parameters())
+        case["output/fields"] = False
+        self.assertEqual(case["output/fields"], "false")
 
     def test_a_refused_value_raises_the_readers_message_and_leaves_the_case_unchanged(self):
         case = geocomp.read_case(DEMO)

@@ -123,6 +123,24 @@ class ARunWithProgress(unittest.TestCase):
         with self.assertRaises(Enough):
             geocomp.run(geocomp.read_case(DEMO), "material-point", progress=stop)
 
+    def test_that_fails_mid_way_raises_run_error_with_the_samples_so_far(self):
+        # A stress axis driven into tension past the Mohr-Coulomb apex (tests/cli/ContinuumFailureTest.cpp).
+        apex = geocomp.Case.parse(
+            "set engines = material-point\n"
+            "subsection specimen\n  set isotropic pressure = 1e5\nend\n"
+            "subsection continuum\n  set cohesion = 0:10e3\n  set friction angle = 0:30\n"
+            "  set dilatancy angle = 0:0\nend\n"
+            "subsection program\n  set sampling interval = 0.1\n  subsection stage 1\n"
+            "    set x = stress -1e5\n    set y = stress -1e5\n    set z = stress 1e6\n"
+            "    set stop when = stage_time >= 2\n    set max duration = 4\n  end\nend\n", "apex.prm")
+        with self.assertRaises(geocomp.RunError) as raised:
+            geocomp.run(apex, "material-point", progress=lambda p: None)
+        self.assertIn("did not converge", str(raised.exception))
+        partial = raised.exception.response
+        self.assertTrue(partial.status.startswith("failed"), partial.status)
+        self.assertGreater(len(partial), 0)
+        self.assertLess(partial.time[-1], 2.0)
+
     def test_refuses_an_engine_the_case_cannot_run(self):
         with self.assertRaises(geocomp.CaseError) as raised:
             geocomp.run(geocomp.read_case(DEMO), "no-such-engine")
