@@ -27,3 +27,14 @@ cmake --build "$work/consumer" >"$work/build.log" 2>&1 || { cat "$work/build.log
 "$work/prefix/bin/geocomp" material-point "$source_dir/cases/demo.prm" --output "$work/cli" >"$work/cli.log" 2>&1 ||
   { cat "$work/cli.log"; exit 1; }
 (cd "$work" && "$work/consumer/geocomp_consumer" "$source_dir/cases/demo.prm" "$work/cli/material-point.h5")
+
+# The Python package installed beside them imports from there and reads the same results.
+if [ -d "$build/python/geocomp" ]; then
+  (cd "$work" && PYTHONPATH="$work/prefix/lib/python3/dist-packages" /usr/bin/python3 -c '
+import sys, geocomp
+assert geocomp.__file__.startswith(sys.argv[1]), geocomp.__file__
+r = geocomp.read_results(sys.argv[2])
+assert len(r) > 0 and r.status == "complete", r
+print("ok: the installed Python package reads the CLI results (%d samples)" % len(r))
+' "$work/prefix" "$work/cli/material-point.h5")
+fi
