@@ -58,16 +58,17 @@ struct Dispatch {
 
 std::optional<Dispatch> dispatch(const std::vector<std::string> &args, int &code)
 {
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+  if (args.empty() || args[0] == "help") {
     print_help(std::cout);
     code = args.empty() ? bad_input : ok;
     return std::nullopt;
   }
   CLI::App app("DEM and Mohr-Coulomb continuum runs of one loading program", "geocomp");
   app.set_help_flag(); // print_help: the commands with their summaries and the exit codes
-  bool version = false, quiet = false, verbose = false;
+  bool help = false, version = false, quiet = false, verbose = false;
+  app.add_flag("-h,--help", help);
   app.add_flag("--version", version);
-  app.add_flag("-q,--quiet", quiet);     // also accepted after the command (Arguments.cpp)
+  app.add_flag("-q,--quiet", quiet); // also accepted after the command (Arguments.cpp)
   app.add_flag("-v,--verbose", verbose);
   app.require_subcommand(0, 1);
   for (const auto &c : commands())
@@ -76,16 +77,25 @@ std::optional<Dispatch> dispatch(const std::vector<std::string> &args, int &code
   try {
     app.parse(reversed);
   } catch (const CLI::ParseError &e) {
-    std::cerr << "geocomp: unknown command '" << args[0] << "'\n\n";
+    const auto word = std::find_if(args.begin(), args.end(), [](const std::string &a) { return a.rfind('-', 0) != 0; });
+    std::cerr << "geocomp: unknown " << (word == args.end() ? "option '" + args[0] : "command '" + *word) << "'\n\n";
     print_help(std::cerr);
+    code = bad_input;
+    return std::nullopt;
+  }
+  if (quiet && verbose) {
+    std::cerr << "geocomp: --quiet and --verbose exclude each other\n";
     code = bad_input;
     return std::nullopt;
   }
   if (quiet || verbose)
     log::set_verbosity(quiet ? log::Verbosity::quiet : log::Verbosity::verbose);
-  if (version || app.get_subcommands().empty()) {
-    std::cout << "geocomp " << GEOCOMP_VERSION << " (git " << GEOCOMP_GIT_HASH << ")\n";
-    code = ok;
+  if (help || version || app.get_subcommands().empty()) {
+    if (version)
+      std::cout << "geocomp " << GEOCOMP_VERSION << " (git " << GEOCOMP_GIT_HASH << ")\n";
+    else
+      print_help(help ? std::cout : std::cerr); // options without a command: bad input
+    code = help || version ? ok : bad_input;
     return std::nullopt;
   }
   const CLI::App *sub = app.get_subcommands().front();

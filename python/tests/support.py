@@ -5,6 +5,9 @@ import subprocess
 
 SOURCE_DIR = pathlib.Path(os.environ.get("GEOCOMP_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 DEMO = "cases/demo.prm"
+# Every per-sample array of a response, as geocomp.run and geocomp.read_results name them.
+ARRAYS = ("time", "strain", "log_strain", "stress", "stress_mean", "volumetric_strain",
+          "gamma_max", "tau_max", "mean_stress", "stage", "branch")
 
 
 def geocomp_exe():
@@ -23,3 +26,16 @@ def largest(a):
     import numpy
     m = float(numpy.max(numpy.abs(a))) if numpy.size(a) else 0.0
     return m if m > 0 else 1.0
+
+
+def cli_results(engine, case=DEMO):
+    """Runs `geocomp ENGINE CASE` into a fresh temporary folder (from the source tree);
+    returns the TemporaryDirectory (the caller cleans it up) and the results file's path."""
+    import tempfile
+    os.chdir(SOURCE_DIR)
+    folder = tempfile.TemporaryDirectory(prefix="geocomp-python-")
+    done = run_cli(engine, case, "--output", folder.name, "--force")
+    if done.returncode != 0:
+        folder.cleanup()
+        raise AssertionError(f"geocomp {engine} failed ({done.returncode}): {done.stderr}")
+    return folder, os.path.join(folder.name, engine + ".h5")

@@ -1,28 +1,19 @@
 """The issue's done-when: `import geocomp` runs the demo's material-point case in-process and
 returns the command line's curve to round-off."""
-import os
 import sys
-import tempfile
 import unittest
 
 import numpy
 
 import geocomp
-from support import DEMO, SOURCE_DIR, largest, run_cli
-
-ARRAYS = ("time", "strain", "log_strain", "stress", "stress_mean", "volumetric_strain",
-          "gamma_max", "tau_max", "mean_stress", "stage", "branch")
+from support import ARRAYS, DEMO, cli_results, largest
 
 
 class TheInProcessMaterialPointRun(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        os.chdir(SOURCE_DIR)
-        cls.folder = tempfile.TemporaryDirectory(prefix="geocomp-python-")
-        done = run_cli("material-point", DEMO, "--output", cls.folder.name, "--force")
-        if done.returncode != 0:
-            raise AssertionError(f"geocomp material-point failed ({done.returncode}): {done.stderr}")
-        cls.file = geocomp.read_results(os.path.join(cls.folder.name, "material-point.h5"))
+        cls.folder, path = cli_results("material-point")
+        cls.file = geocomp.read_results(path)
         cls.response = geocomp.run(geocomp.read_case(DEMO), "material-point", output=cls.folder.name)
 
     @classmethod

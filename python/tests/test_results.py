@@ -2,27 +2,18 @@
 import json
 import math
 import os
-import tempfile
 import unittest
 
 import numpy
 
 import geocomp
-from support import DEMO, SOURCE_DIR, run_cli
-
-ARRAYS = ("time", "strain", "log_strain", "stress", "stress_mean", "volumetric_strain",
-          "gamma_max", "tau_max", "mean_stress", "stage", "branch")
+from support import ARRAYS, DEMO, SOURCE_DIR, cli_results, run_cli
 
 
 class AResultsFile(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        os.chdir(SOURCE_DIR)
-        cls.folder = tempfile.TemporaryDirectory(prefix="geocomp-python-")
-        done = run_cli("material-point", DEMO, "--output", cls.folder.name, "--force")
-        if done.returncode != 0:
-            raise AssertionError(f"geocomp material-point failed ({done.returncode}): {done.stderr}")
-        cls.path = os.path.join(cls.folder.name, "material-point.h5")
+        cls.folder, cls.path = cli_results("material-point")
         cls.case = geocomp.read_case(DEMO)
 
     @classmethod

@@ -2,6 +2,7 @@
 // the holder, a stale lock is taken over with a warning), an output path that cannot be a
 // folder is bad input, and a folder name holding quotes, spaces, `$()`, back quotes or ';'
 // is only a name - results, report and plots land in it and no command runs.
+#include "tests/cli/PointCase.h"
 #include "tests/common/CommandRun.h"
 #include "tests/common/ScratchFolder.h"
 
@@ -17,20 +18,10 @@
 
 namespace fs = std::filesystem;
 using geocomp::test::run_program;
+using geocomp::test::write_point_case;
 using Scratch = geocomp::test::ScratchFolder;
 
 namespace {
-/// A material-point case (under a second of run time) whose results go to `output`.
-fs::path write_case(const fs::path &dir, const std::string &output)
-{
-  const fs::path file = dir / "point.prm";
-  std::ofstream(file) << "set engines = material-point\n"
-                      << "subsection program\n  set sampling interval = 0.002\n  subsection stage 1\n"
-                      << "    set x = stress -2e5\n    set y = stress -2e5\n    set z = rate -1\n"
-                      << "    set stop when = eps_zz <= -0.02\n    set max duration = 1\n  end\nend\n"
-                      << "subsection output\n  set directory = " << output << "\n  set fields = false\nend\n";
-  return file;
-}
 
 std::size_t files_named_pwned(const fs::path &root)
 {
@@ -61,7 +52,7 @@ TEST(OutputFolder, ASecondRunIntoALockedFolderExitsTwoNamingTheHolderAndWritesNo
   fs::create_directories(out);
   const std::string holder = "process " + std::to_string(::getpid()) + " on test-host: geocomp pair other.prm\n";
   const HeldLock lock(out, holder);
-  const fs::path c = write_case(s.dir, out.string());
+  const fs::path c = write_point_case(s.dir, out.string());
   for (const char *command : {"material-point", "pair", "report"}) {
     const auto r = run_program({GEOCOMP_EXE, command, c.string()}, s.dir);
     EXPECT_EQ(r.code, 2) << command << ": " << r.err;
@@ -113,7 +104,7 @@ TEST(OutputFolder, AStaleLockOfAProcessThatIsGoneIsTakenOverWithAWarning)
   fs::create_directories(out);
   // Written by a run that was killed: the file stays, its flock went with the process.
   std::ofstream(out / ".geocomp.lock") << "process 999999 on gone-host: geocomp pair killed.prm\n";
-  const fs::path c = write_case(s.dir, out.string());
+  const fs::path c = write_point_case(s.dir, out.string());
   const auto r = run_program({GEOCOMP_EXE, "material-point", c.string()}, s.dir);
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: output folder '" + out.string() + "': took over the lock left by process 999999"),
@@ -126,7 +117,7 @@ TEST(OutputFolder, AStaleLockOfAProcessThatIsGoneIsTakenOverWithAWarning)
 TEST(OutputFolder, FoldersARunMadeAndLeftEmptyAreRemovedWithTheLock)
 {
   const Scratch s("output-empty");
-  const fs::path c = write_case(s.dir, "unused");
+  const fs::path c = write_point_case(s.dir, "unused");
   // report finds no results to report (a run failure): the folders it made go again.
   const auto r = run_program({GEOCOMP_EXE, "report", c.string(), "--output", (s.dir / "a/b/c").string()}, s.dir);
   EXPECT_EQ(r.code, 1) << r.err;
@@ -139,7 +130,7 @@ TEST(OutputFolder, AnOutputPathThatIsAFileOrCannotBeCreatedIsBadInputExitTwo)
   const Scratch s("output-path");
   const fs::path file = s.dir / "a-file";
   std::ofstream(file) << "not a folder\n";
-  const fs::path c = write_case(s.dir, file.string());
+  const fs::path c = write_point_case(s.dir, file.string());
   for (const char *command : {"material-point", "pair", "report"}) {
     const auto r = run_program({GEOCOMP_EXE, command, c.string()}, s.dir);
     EXPECT_EQ(r.code, 2) << command << ": " << r.err;
@@ -171,7 +162,7 @@ TEST(OutputFolder, QuotesSpacesDollarParenBackQuotesAndSemicolonsInTheFolderName
   for (const std::string name : {"it's a \"run\" $(touch pwned1); touch pwned2 `touch pwned3` & touch pwned4",
                                  "a'; touch pwned5; echo '"}) {
     const fs::path out = s.dir / name;
-    const fs::path c = write_case(s.dir, "unused");
+    const fs::path c = write_point_case(s.dir, "unused");
     auto r = run_program({GEOCOMP_EXE, "pair", c.string(), "--output", out.string()}, s.dir);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(fs::exists(out / "material-point.h5"));

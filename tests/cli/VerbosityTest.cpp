@@ -2,6 +2,7 @@
 // parsing (CLI11, compare/cli/Arguments.cpp): --quiet leaves warnings and errors alone and
 // no progress, --verbose adds the "debug:" details, both given before or after the command;
 // a malformed line is refused with exit 2 and the command's usage, whatever the level.
+#include "tests/cli/PointCase.h"
 #include "tests/common/CommandRun.h"
 #include "tests/common/ScratchFolder.h"
 
@@ -12,27 +13,13 @@
 
 namespace fs = std::filesystem;
 using geocomp::test::run_program;
+using geocomp::test::write_point_case;
 using Scratch = geocomp::test::ScratchFolder;
-
-namespace {
-/// A material-point case of a few hundred samples (under a second) writing to `output`.
-fs::path write_case(const fs::path &dir, const std::string &output)
-{
-  fs::create_directories(dir);
-  const fs::path file = dir / "point.prm";
-  std::ofstream(file) << "set engines = material-point\n"
-                      << "subsection program\n  set sampling interval = 0.002\n  subsection stage 1\n"
-                      << "    set x = stress -2e5\n    set y = stress -2e5\n    set z = rate -1\n"
-                      << "    set stop when = eps_zz <= -0.02\n    set max duration = 1\n  end\nend\n"
-                      << "subsection output\n  set directory = " << output << "\n  set fields = false\nend\n";
-  return file;
-}
-} // namespace
 
 TEST(Verbosity, NormalSaysWhatItWroteQuietSaysNothingAndBothWriteTheSameResults)
 {
   Scratch s("verbosity-levels");
-  const fs::path c = write_case(s.dir, "out");
+  const fs::path c = write_point_case(s.dir, "out");
   const auto normal = run_program({GEOCOMP_EXE, "material-point", c.string(), "--output", "normal"}, s.dir);
   ASSERT_EQ(normal.code, 0) << normal.err;
   EXPECT_NE(normal.out.find("material-point: "), std::string::npos) << normal.out;
@@ -53,7 +40,7 @@ TEST(Verbosity, NormalSaysWhatItWroteQuietSaysNothingAndBothWriteTheSameResults)
 TEST(Verbosity, VerboseAddsTheDetailsOnStandardErrorBeforeOrAfterTheCommand)
 {
   Scratch s("verbosity-verbose");
-  const fs::path c = write_case(s.dir, "out");
+  const fs::path c = write_point_case(s.dir, "out");
   for (const auto &argv : {std::vector<std::string>{GEOCOMP_EXE, "material-point", c.string(), "--verbose", "--force"},
                            std::vector<std::string>{GEOCOMP_EXE, "--verbose", "material-point", c.string(), "--force"}}) {
     const auto r = run_program(argv, s.dir);
@@ -80,7 +67,7 @@ TEST(Verbosity, QuietStillReportsErrorsAndExitsTwoOnBadInput)
 TEST(CommandLine, MalformedLinesAreRefusedWithExitTwoAndTheCommandsUsage)
 {
   Scratch s("command-line");
-  const fs::path c = write_case(s.dir, "out");
+  const fs::path c = write_point_case(s.dir, "out");
   struct Line {
     std::vector<std::string> args;
     std::string says;
@@ -103,6 +90,11 @@ TEST(CommandLine, MalformedLinesAreRefusedWithExitTwoAndTheCommandsUsage)
   const auto unknown = run_program({GEOCOMP_EXE, "no-such-command"}, s.dir);
   EXPECT_EQ(unknown.code, 2);
   EXPECT_NE(unknown.err.find("unknown command 'no-such-command'"), std::string::npos) << unknown.err;
+  const auto level_alone = run_program({GEOCOMP_EXE, "-q"}, s.dir);
+  EXPECT_EQ(level_alone.code, 2) << "a level without a command is bad input";
+  const auto unknown_after_level = run_program({GEOCOMP_EXE, "-q", "no-such-command"}, s.dir);
+  EXPECT_EQ(unknown_after_level.code, 2);
+  EXPECT_NE(unknown_after_level.err.find("unknown command 'no-such-command'"), std::string::npos) << unknown_after_level.err;
   const auto inline_value = run_program({GEOCOMP_EXE, "material-point", c.string(), "--output=given"}, s.dir);
   EXPECT_EQ(inline_value.code, 0) << inline_value.err;
   EXPECT_TRUE(fs::exists(s.dir / "given/material-point.h5"));
