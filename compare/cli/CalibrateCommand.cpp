@@ -4,6 +4,7 @@
 #include "Log.h"
 #include "Commands.h"
 #include "Engines.h"
+#include "Mpi.h"
 #include "OutputFolderLock.h"
 
 #include "common/ProgramRunner.h"

@@ -53,10 +53,6 @@ Command export_command();
 Command rate_sweep_command();
 Command crush_command();
 Command shear_box_command();
-/// Starts MPI (and PETSc) once, for the commands that run engines (deal.II's MPI_InitFinalize:
-/// one thread per rank for deal.II's task parallelism; the DEM uses OpenMP).
-void ensure_mpi();
-void finalize_mpi();
 /// The command line, stored in every results file.
 void set_command_line(const std::string &line);
 

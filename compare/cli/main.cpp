@@ -1,11 +1,10 @@
 // geocomp: DEM and elastoplastic continuum runs of one loading program, compared.
 #include "Commands.h"
 #include "Log.h"
+#include "Mpi.h"
 
 #include "common/Version.h"
 #include "common/case/CaseParameters.h"
-
-#include <deal.II/base/mpi.h>
 
 #include <CLI/CLI.hpp>
 
@@ -15,21 +14,6 @@
 #include <iostream>
 
 namespace geocomp::cli {
-
-namespace {
-int saved_argc = 0;
-char **saved_argv = nullptr;
-std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
-} // namespace
-
-void ensure_mpi()
-{
-  // Started only by commands that run engines: checking a case needs no MPI.
-  if (!mpi)
-    mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(saved_argc, saved_argv, 1);
-}
-
-void finalize_mpi() { mpi.reset(); }
 
 namespace {
 void print_help(std::ostream &out)
@@ -113,8 +97,7 @@ std::optional<Dispatch> dispatch(const std::vector<std::string> &args, int &code
 int main(int argc, char **argv)
 {
   using namespace geocomp::cli;
-  saved_argc = argc;
-  saved_argv = argv;
+  set_mpi_arguments(argc, argv);
   std::vector<std::string> args(argv + 1, argv + argc);
   std::string line = "geocomp";
   for (const auto &a : args)

@@ -16,6 +16,7 @@ from ._geocomp import (  # noqa: F401  (the package's interface)
     engines,
     material_point,
     metrics,
+    pair,
     read_case,
     rudnicki_rice,
     rudnicki_rice_from_drucker_prager,
@@ -26,6 +27,6 @@ from .results import Results, read_results  # noqa: F401
 
 __all__ = [
     "Case", "CaseError", "Response", "Results", "RunError", "acoustic_tensor_onset", "check",
-    "deviatoric_state", "engines", "material_point", "metrics", "read_case", "read_results",
+    "deviatoric_state", "engines", "material_point", "metrics", "pair", "read_case", "read_results",
     "rudnicki_rice", "rudnicki_rice_from_drucker_prager", "rudnicki_rice_onset", "run",
 ]

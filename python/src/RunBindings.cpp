@@ -1,12 +1,16 @@
 // geocomp.run and geocomp.material_point: an engine of a case played through the case's
 // loading program in this process, the way `geocomp <engine>` plays it (make_engine() of
-// compare/cli/Engines.h, then ProgramRunner), with the progress reported to Python.
+// compare/cli/Engines.h, then ProgramRunner), with the progress reported to Python;
+// geocomp.pair: the command line's own `pair` (compare/cli/Pair.h) - results files, report.
 #include "Bindings.h"
 
 #include "common/ProgramRunner.h"
+#include "compare/Report.h"
+#include "compare/cli/CaseValidation.h"
 #include "compare/cli/Engines.h"
-
-#include <deal.II/base/mpi.h>
+#include "compare/cli/Mpi.h"
+#include "compare/cli/OutputFolderLock.h"
+#include "compare/cli/Pair.h"
 
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
@@ -18,20 +22,16 @@ namespace geocomp::python {
 namespace py = pybind11;
 
 namespace {
-/// MPI (and PETSc) for the FE cube, started once per process as the command line starts it
-/// (deal.II's MPI_InitFinalize, one thread per rank) and finished when Python exits.
-std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
-
+/// MPI (and PETSc) started once per process as the command line starts it (compare/cli/Mpi.h),
+/// and finished when Python exits.
 void ensure_mpi()
 {
-  if (mpi)
+  static bool started = false;
+  if (started)
     return;
-  static int argc = 1;
-  static char name[] = "python3";
-  static char *argv_storage[] = {name, nullptr};
-  static char **argv = argv_storage;
-  mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
-  py::module_::import("atexit").attr("register")(py::cpp_function([] { mpi.reset(); }));
+  cli::ensure_mpi();
+  py::module_::import("atexit").attr("register")(py::cpp_function([] { cli::finalize_mpi(); }));
+  started = true;
 }
 
 /// Thrown from the progress callback to stop the run when Python raised; the Python
@@ -100,6 +100,62 @@ PyResponse run(const PyCase &c, const std::string &engine, const std::optional<s
   const std::string status = completion_status(r, d.program);
   return PyResponse(std::move(r), status);
 }
+/// geocomp.pair: the command line's `pair` on `c` into `output` (the case's output folder by
+/// default, locked for the run as the command line locks it), the progress of every engine
+/// reported to Python (`engine` added to the dict).
+py::dict pair(const PyCase &c, const std::optional<std::string> &output, bool force,
+              const std::optional<py::function> &progress, const py::object &run_error)
+{
+  const CaseDescription &d = c.description();
+  cli::validate_engines(d); // every engine's refusals before anything runs (CaseError)
+  ensure_mpi();
+  const std::string dir = output.value_or(d.output.directory);
+  cli::RunSettings settings;
+  settings.reuse = !force;
+  settings.command_line = "python3: geocomp.pair(" + d.file + ")";
+  settings.signal_checkpoints = false;
+  std::optional<py::error_already_set> raised;
+  if (progress)
+    settings.progress = [&](const std::string &engine, const RunProgress &p) {
+      py::gil_scoped_acquire gil;
+      try {
+        py::dict state = progress_dict(p);
+        state["engine"] = engine;
+        (*progress)(state);
+        if (PyErr_CheckSignals() != 0)
+          throw py::error_already_set();
+      } catch (py::error_already_set &python_error) {
+        raised.emplace(std::move(python_error));
+        throw CallbackRaised();
+      }
+    };
+  cli::PairOutcome outcome;
+  try {
+    py::gil_scoped_release released;
+    const auto lock = cli::lock_for_run(dir, d.file, output ? "output" : "output/directory", MPI_COMM_WORLD);
+    outcome = cli::pair_case(d, dir, settings);
+  } catch (const CaseError &) {
+    throw;
+  } catch (const std::exception &failure) {
+    if (raised)
+      throw std::move(*raised);
+    py::object error = run_error(failure.what());
+    error.attr("response") = py::none(); // the samples so far are in the engine's file
+    PyErr_SetObject(run_error.ptr(), error.ptr());
+    throw py::error_already_set();
+  }
+  py::dict responses;
+  for (auto &[engine, response] : outcome.runs) {
+    const std::string status = completion_status(response, d.program);
+    responses[py::str(engine)] = PyResponse(std::move(response), status);
+  }
+  py::dict result;
+  result["responses"] = responses;
+  result["metrics"] = py::module_::import("json").attr("loads")(compare::metrics_json(outcome.comparison));
+  result["report"] = outcome.report.string();
+  result["complete"] = outcome.complete;
+  return result;
+}
 } // namespace
 
 void bind_run(py::module_ &m)
@@ -126,6 +182,26 @@ Ctrl-C) stops the run and is raised again. The GIL is released while the engine 
 A run that fails mid-way raises RunError (its .response holds the samples so far); a stage
 ended by its max duration returns a Response whose status says so. 'continuum' starts MPI
 in this process once (one rank; docs/python.md).)doc");
+  m.def(
+    "pair",
+    [error_type](const PyCase &c, std::optional<std::string> output, bool force, std::optional<py::function> progress) {
+      return pair(c, output, force, progress, error_type);
+    },
+    py::arg("case"), py::arg("output") = py::none(), py::arg("force") = false, py::arg("progress") = py::none(),
+    R"doc(Runs every engine the case names, compares them and writes the report: `geocomp pair`.
+
+The command line's own code: each engine's results file <output>/<engine>.h5 (reused when
+made from the same case text and parameters by the same build, unless force=True), the DEM's
+particle snapshots and program checkpoints, the FE cube's mid-plane, <output>/report/
+(index.html, metrics.json, plots). output: default the case's output/directory; the folder
+is locked for the run as the command line locks it (CaseError when another run holds it).
+progress(p) is called at every sample with run()'s dict plus 'engine'; an exception it
+raises (or Ctrl-C) stops the run and is raised again (the stopped engine's file holds the
+samples so far, with its status). Returns a dict: 'responses' {engine: Response},
+'metrics' (metrics.json's content: each engine's metrics, differences, the Rudnicki-Rice
+verdict), 'report' (the path of index.html) and 'complete' (every engine finished its
+program). Starts MPI in this process once (one rank); the GIL is released while it runs.
+CaseError for a refused case; RunError for a run that failed mid-way.)doc");
   m.def(
     "material_point",
     [error_type](const PyCase &c, const std::map<std::string, py::object> &entries,

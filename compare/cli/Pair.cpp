@@ -1,0 +1,125 @@
+#include "Pair.h"
+#include "DemSnapshots.h"
+#include "Engines.h"
+#include "Log.h"
+#include "MidPlane.h"
+#include "Mpi.h"
+
+#include "compare/LocalizationOnsets.h"
+#include "compare/Metrics.h"
+#include "compare/calibrate/FitReport.h"
+
+#include <algorithm>
+
+namespace geocomp::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string label_of(const std::string &engine)
+{
+  if (engine == "dem")
+    return "DEM";
+  if (engine == "continuum")
+    return "FE cube";
+  return "material point";
+}
+} // namespace
+
+compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &runs, const fs::path &dir)
+{
+  compare::ReportInput in;
+  in.title = c.title.empty() ? "geocomp: " + c.file : c.title;
+  in.case_name = c.file;
+  in.kind = compare::curve_kind_for(c.program);
+  in.axial = compare::axial_axis_for(c.program);
+  compare::MetricOptions options;
+  options.kind = in.kind;
+  options.axial = in.axial;
+  for (const auto &[engine, instantaneous] : runs) {
+    // Metrics, curves and tables read each engine's interval-mean stresses (the DEM's; the
+    // continuum's samples are its states), and the report says so.
+    const Response response = with_interval_means(instantaneous);
+    if (instantaneous.interval_means)
+      in.notes.push_back(label_of(engine) + ": stresses in the curves, tables and metrics are means over each "
+                         "sampling interval (the instantaneous samples are /response/stress of " +
+                         results_file(engine) + ").");
+    in.responses.push_back({label_of(engine), response});
+    try {
+      in.metrics.push_back({label_of(engine), compare::compute_metrics(response, options)});
+    } catch (const std::exception &e) {
+      in.notes.push_back(label_of(engine) + ": metrics not computed: " + e.what());
+    }
+  }
+  // Rudnicki-Rice: the theory along the material-point path against each engine's onset.
+  const Response *point = nullptr;
+  std::vector<compare::OnsetEstimate> onsets;
+  for (const auto &[engine, response] : runs) {
+    if (engine == "material-point")
+      point = &response;
+    if (engine != "dem")
+      onsets.push_back(
+        compare::acoustic_tensor_onset(response, label_of(engine) + " (acoustic tensor)", in.kind, -1, in.axial));
+    else
+      add_dem_fields(in, dir, onsets);
+    if (engine == "continuum")
+      add_continuum_plane(in, dir, response, cube_parameters(c, dir.string()).side);
+  }
+  in.calibrated_parameters = calibration::read_parameter_table(dir / "calibration");
+  // DEM and FE maps side by side: DEM u_x | FE u_x, DEM u_z | FE kappa.
+  std::vector<compare::DisplacementMap> dem_maps, fe_maps;
+  for (auto &m : in.maps)
+    (m.title.rfind("DEM", 0) == 0 ? dem_maps : fe_maps).push_back(std::move(m));
+  in.maps.clear();
+  for (std::size_t k = 0; k < std::max(dem_maps.size(), fe_maps.size()); ++k) {
+    if (k < dem_maps.size())
+      in.maps.push_back(std::move(dem_maps[k]));
+    if (k < fe_maps.size())
+      in.maps.push_back(std::move(fe_maps[k]));
+  }
+  if (point && c.continuum.model == "nikolaevsky") {
+    in.notes.push_back("No Rudnicki-Rice prediction: it is computed from the Mohr-Coulomb parameters, and the "
+                       "case's model is nikolaevsky.");
+  } else if (point) {
+    const continuum::MaterialParameters m = continuum_material(c);
+    const compare::KappaMeasure measure = c.continuum.model == "drucker-prager" ? compare::KappaMeasure::shear_strain
+                                                                                : compare::KappaMeasure::mohr_coulomb;
+    in.verdict = compare::rudnicki_rice_verdict(
+      compare::rudnicki_rice_onset(*point, m.mohr_coulomb, m.drucker_prager_matching, measure, in.kind, -1, in.axial),
+      onsets);
+  } else {
+    in.notes.push_back("No Rudnicki-Rice prediction: add 'material-point' to the case's engines.");
+  }
+  in.notes.push_back("Measures, the same for every engine: logarithmic strain ln(L/L0) of the box edges and "
+                     "Cauchy stress (force over current area); continuum kinematics: " + c.continuum.kinematics + ". " +
+                     (in.kind == compare::CurveKind::AxialLateral
+                        ? "Axial curve on axis " + in.axial.value_or(compare::AxialAxis{}).describe() + "."
+                        : std::string("tau_max and gamma_max are sign-free.")));
+  return in;
+}
+
+fs::path write_report_and_say(const compare::ReportInput &in, const fs::path &dir, MPI_Comm comm)
+{
+  if (rank_in(comm) != 0)
+    return {};
+  const compare::ReportOutcome out = compare::write_report(in, dir / "report");
+  log::info("report: " + (out.dir / "index.html").string());
+  if (!out.plots_made)
+    log::info("  (" + out.message + ")");
+  return out.dir / "index.html";
+}
+
+PairOutcome pair_case(const CaseDescription &c, const fs::path &dir, const RunSettings &settings)
+{
+  PairOutcome outcome;
+  for (const auto &engine : engine_names())
+    if (std::find(c.engines.begin(), c.engines.end(), engine) != c.engines.end())
+      outcome.runs.emplace_back(engine, run_engine(engine, c, dir, settings));
+  outcome.comparison = report_input(c, outcome.runs, dir);
+  outcome.report = write_report_and_say(outcome.comparison, dir, settings.comm);
+  for (const auto &[engine, response] : outcome.runs)
+    outcome.complete = outcome.complete && completion_status(response, c.program) == "complete";
+  return outcome;
+}
+
+} // namespace geocomp::cli
