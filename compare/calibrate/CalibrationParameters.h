@@ -35,6 +35,9 @@ struct CalibrationParameters {
   std::vector<FittedQuantity> quantities{{"q", 1.0}, {"eps_v", 1.0}}; ///< residuals at each sample
   unsigned int max_iterations = 100;
   std::string output_file = "calibrated.prm"; ///< inside the output directory's calibration/ folder
+  /// The continuum `pair` runs: "as given" (the continuum section) or "calibrated" (fitted to
+  /// the pair's own DEM run and the targets first).
+  std::string pair_continuum = "as given";
 
   /// Every entry, written as the case file gives it (bounds as `name:lower:upper`,
   /// quantities as `name:weight`); read-only (the lists are rebuilt for writing).
@@ -53,6 +56,7 @@ struct CalibrationParameters {
     v("starting values", p.starting_values);
     v("quantities", quantities);
     v("max iterations", p.max_iterations);
+    v("pair continuum", p.pair_continuum);
     v("output file", p.output_file);
   }
 };

@@ -39,6 +39,11 @@ void declare_calibration(dealii::ParameterHandler &prm)
                     "quantity that shows dilatancy in isochoric shear), eps_v (volumetric strain, scaled by "
                     "its range, at least 1e-3).");
   prm.declare_entry("max iterations", "100", Integer(1, 100000), "Levenberg-Marquardt iterations at most.");
+  prm.declare_entry("pair continuum", "as given", Selection("as given|calibrated"),
+                    "The continuum `pair` runs: the continuum section as given, or first calibrated to the "
+                    "pair's own DEM run (and to the targets above): the DEM runs first, the fit and its "
+                    "report go to <output directory>/calibration/, and the material point and the FE cube "
+                    "run the calibrated section (`pair --calibrate` sets calibrated).");
   prm.declare_entry("output file", "calibrated.prm", Anything(),
                     "The calibrated 'subsection continuum' fragment, written to <output directory>/calibration/; "
                     "case files pull it in with 'include <path>'.");
@@ -59,6 +64,7 @@ CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Rea
   const std::vector<std::string> quantities = dealii::Utilities::split_string_list(prm.get("quantities"));
   p.max_iterations = prm.get_integer("max iterations");
   p.output_file = prm.get("output file");
+  p.pair_continuum = prm.get("pair continuum");
   prm.leave_subsection();
 
   for (const auto &w : weights) {

@@ -275,8 +275,7 @@ void write_folder(const fs::path &dir, const std::string &fragment_name, const C
                   const std::vector<FitTarget> &targets, const std::string &case_file,
                   const std::vector<Verification> &verification)
 {
-  write_text(dir / fragment_name, calibrated_fragment(r, "calibrated by `geocomp calibrate " + case_file + "` (" +
-                                                           std::to_string(targets.size()) + " target curves)"));
+  write_text(dir / fragment_name, calibrated_fragment(r, fragment_comment(case_file, targets.size())));
   std::ostringstream tsv;
   tsv << "# name\tstart\tvalue\tstandard_error (\"fixed\": not calibrated, the case's value)\n";
   for (std::size_t i = 0; i < r.parameters.size(); ++i)
@@ -328,6 +327,11 @@ std::string family_of(const std::string &name) { return name.substr(0, name.find
 std::string continuum_fragment(const ContinuumParameters &p, const std::string &comment)
 {
   return fragment(p, {comment}, {"E", "nu", "cohesion", "friction", "dilatancy"});
+}
+
+std::string fragment_comment(const std::string &case_file, std::size_t targets)
+{
+  return "calibrated from " + case_file + " (" + std::to_string(targets) + " target curves)";
 }
 
 std::string calibrated_fragment(const CalibrationResult &r, const std::string &comment)

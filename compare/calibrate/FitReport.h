@@ -39,6 +39,8 @@ std::string continuum_fragment(const ContinuumParameters &p, const std::string &
 /// (E, nu, a table with a free knot - whole, its other knots as the case has them), so
 /// that a case including it changes nothing the calibration did not fit.
 std::string calibrated_fragment(const CalibrationResult &result, const std::string &comment);
+/// The fragment's comment in the fit report: the case and the number of target curves.
+std::string fragment_comment(const std::string &case_file, std::size_t targets);
 
 void write_fit_report(const std::filesystem::path &dir, const std::string &fragment_name,
                       const CalibrationResult &result, const std::vector<FitTarget> &targets,

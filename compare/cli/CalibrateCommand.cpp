@@ -6,6 +6,7 @@
 #include "Engines.h"
 #include "Mpi.h"
 #include "OutputFolderLock.h"
+#include "PairCalibration.h"
 
 #include "common/ProgramRunner.h"
 #include "compare/calibrate/Calibration.h"
@@ -93,19 +94,7 @@ Command calibrate_command()
                         "behind drucker-prager): expected mohr-coulomb or drucker-prager, got nikolaevsky");
       if (c.calibration.targets.empty())
         throw CaseError(c.file, "calibration/targets", "expected at least one results file to fit");
-      for (std::size_t k = 0; k < c.calibration.targets.size(); ++k) {
-        const std::string &f = c.calibration.targets[k];
-        if (!fs::exists(f))
-          throw CaseError(c.file, "calibration/targets",
-                          "'" + f + "' does not exist (run the target case first, e.g. `geocomp dem <case>`)");
-        if (!fs::is_regular_file(f))
-          throw CaseError(c.file, "calibration/targets", "'" + f + "' is not a regular file: expected a results file (.h5)");
-        try {
-          targets.push_back(load_target(f, c.calibration.weights.empty() ? 1.0 : c.calibration.weights[k]));
-        } catch (const CalibrationError &e) {
-          throw CaseError(c.file, "calibration/targets", e.what());
-        }
-      }
+      targets = case_targets(c);
     } catch (const CaseError &e) {
       log::error(e.what());
       return static_cast<int>(bad_input);
@@ -123,13 +112,7 @@ Command calibrate_command()
       const StartingValues start = starting_values(c.continuum, targets, c.calibration);
       CalibrationResult r = calibrate(start.parameters, targets, c.calibration);
       r.notes.insert(r.notes.begin(), start.notes.begin(), start.notes.end());
-      std::cout << "calibrate: " << r.iterations << " iterations, " << r.seconds << " s, cost " << r.initial_cost
-                << " -> " << r.final_cost << "\n";
-      for (std::size_t i = 0; i < r.parameters.size(); ++i)
-        std::cout << "  " << r.parameters[i].name << " = " << r.value[i] << " +- " << r.standard_error[i]
-                  << "  (start " << r.start[i] << ")\n";
-      for (const FixedParameter &f : r.fixed)
-        std::cout << "  " << f.name << " = " << f.value << "  (fixed: the case's value)\n";
+      std::cout << calibration_summary(r);
       for (const auto &w : r.warnings)
         log::warning(c.file + ": calibration/free parameters: " + w);
       std::vector<Verification> verification;

@@ -1,5 +1,6 @@
 // See CaseValidation.h: each engine's refusals, before any engine runs.
 #include "CaseValidation.h"
+#include "PairCalibration.h"
 #include "Log.h"
 
 #include "Engines.h"
@@ -39,6 +40,7 @@ void validate_engines(const CaseDescription &c, const std::vector<std::string> &
       names.push_back(e);
   for (const auto &e : names)
     validate_engine(e, c);
+  validate_pair_calibration(c);
 }
 
 CaseDescription read_valid_case(const std::string &path, const std::vector<std::string> &also)

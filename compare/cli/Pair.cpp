@@ -4,12 +4,14 @@
 #include "Log.h"
 #include "MidPlane.h"
 #include "Mpi.h"
+#include "PairCalibration.h"
 
 #include "compare/LocalizationOnsets.h"
 #include "compare/Metrics.h"
 #include "compare/calibrate/FitReport.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace geocomp::cli {
 
@@ -77,11 +79,26 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
     if (k < fe_maps.size())
       in.maps.push_back(std::move(fe_maps[k]));
   }
+  // A calibrated pair's continuum engines ran the calibrated section (PairCalibration.h).
+  const std::optional<CaseDescription> calibrated = calibrated_case_in(c, dir);
+  if (pair_calibrates(c)) {
+    const bool with_dem = std::find(c.engines.begin(), c.engines.end(), "dem") != c.engines.end();
+    const std::size_t n = c.calibration.targets.size();
+    const std::string to = std::string(with_dem ? "this pair's DEM run" : "") + (with_dem && n > 0 ? " and " : "") +
+                           (n > 0 ? std::to_string(n) + " results file(s) of calibration/targets" : "");
+    in.notes.push_back(calibrated ? "Material point and FE cube: the continuum section calibrated to " + to + ", " +
+                                      (dir / "calibration" / c.calibration.output_file).string() +
+                                      " (fit report: calibration/index.html)."
+                                  : "The case asks for a continuum calibrated to " + to +
+                                      ", but no calibrated section is in " + (dir / "calibration").string() +
+                                      ": run `geocomp pair` again.");
+  }
+  const CaseDescription &continuum_case = calibrated ? *calibrated : c;
   if (point && c.continuum.model == "nikolaevsky") {
     in.notes.push_back("No Rudnicki-Rice prediction: it is computed from the Mohr-Coulomb parameters, and the "
                        "case's model is nikolaevsky.");
   } else if (point) {
-    const continuum::MaterialParameters m = continuum_material(c);
+    const continuum::MaterialParameters m = continuum_material(continuum_case);
     const compare::KappaMeasure measure = c.continuum.model == "drucker-prager" ? compare::KappaMeasure::shear_strain
                                                                                 : compare::KappaMeasure::mohr_coulomb;
     in.verdict = compare::rudnicki_rice_verdict(
@@ -112,9 +129,22 @@ fs::path write_report_and_say(const compare::ReportInput &in, const fs::path &di
 PairOutcome pair_case(const CaseDescription &c, const fs::path &dir, const RunSettings &settings)
 {
   PairOutcome outcome;
+  std::vector<std::string> engines;
   for (const auto &engine : engine_names())
     if (std::find(c.engines.begin(), c.engines.end(), engine) != c.engines.end())
+      engines.push_back(engine);
+  if (!pair_calibrates(c)) {
+    for (const auto &engine : engines)
       outcome.runs.emplace_back(engine, run_engine(engine, c, dir, settings));
+  } else {
+    // The DEM first; the continuum engines run the section calibrated to it.
+    std::optional<Response> dem;
+    if (std::find(engines.begin(), engines.end(), "dem") != engines.end())
+      dem = run_engine("dem", c, dir, settings);
+    const CaseDescription calibrated = calibrate_for_pair(c, dem ? &*dem : nullptr, dir, settings.comm);
+    for (const auto &engine : engines)
+      outcome.runs.emplace_back(engine, engine == "dem" ? *dem : run_engine(engine, calibrated, dir, settings));
+  }
   outcome.comparison = report_input(c, outcome.runs, dir);
   outcome.report = write_report_and_say(outcome.comparison, dir, settings.comm);
   for (const auto &[engine, response] : outcome.runs)

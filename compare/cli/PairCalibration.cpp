@@ -1,0 +1,119 @@
+#include "PairCalibration.h"
+#include "Engines.h"
+#include "Log.h"
+#include "Mpi.h"
+
+#include "common/case/JsonCase.h"
+#include "common/case/ParseParameters.h"
+#include "compare/calibrate/FitReport.h"
+#include "compare/calibrate/StartingValues.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace geocomp::cli {
+
+namespace fs = std::filesystem;
+using namespace geocomp::calibration;
+
+namespace {
+fs::path fragment_path(const CaseDescription &c, const fs::path &dir)
+{
+  return dir / "calibration" / c.calibration.output_file;
+}
+} // namespace
+
+bool pair_calibrates(const CaseDescription &c) { return c.calibration.pair_continuum == "calibrated"; }
+
+std::vector<FitTarget> case_targets(const CaseDescription &c)
+{
+  std::vector<FitTarget> targets;
+  for (std::size_t k = 0; k < c.calibration.targets.size(); ++k) {
+    const std::string &f = c.calibration.targets[k];
+    if (!fs::exists(f))
+      throw CaseError(c.file, "calibration/targets",
+                      "'" + f + "' does not exist (run the target case first, e.g. `geocomp dem <case>`)");
+    if (!fs::is_regular_file(f))
+      throw CaseError(c.file, "calibration/targets", "'" + f + "' is not a regular file: expected a results file (.h5)");
+    try {
+      targets.push_back(load_target(f, c.calibration.weights.empty() ? 1.0 : c.calibration.weights[k]));
+    } catch (const CalibrationError &e) {
+      throw CaseError(c.file, "calibration/targets", e.what());
+    }
+  }
+  return targets;
+}
+
+void validate_pair_calibration(const CaseDescription &c)
+{
+  if (!pair_calibrates(c))
+    return;
+  if (std::find(c.engines.begin(), c.engines.end(), "dem") == c.engines.end() && c.calibration.targets.empty())
+    throw CaseError(c.file, "calibration/pair continuum",
+                    "calibrated: the continuum is fitted to the pair's DEM run and to calibration/targets, expected "
+                    "'dem' among the engines or at least one target");
+  if (c.continuum.model == "nikolaevsky")
+    throw CaseError(c.file, "calibration/pair continuum",
+                    "calibrated: the calibration fits the Mohr-Coulomb parameters (E, nu, cohesion, friction, "
+                    "dilatancy, also behind drucker-prager), expected continuum/model mohr-coulomb or "
+                    "drucker-prager, got nikolaevsky");
+  case_targets(c);
+}
+
+std::string calibration_summary(const CalibrationResult &r)
+{
+  std::ostringstream out;
+  out << "calibrate: " << r.iterations << " iterations, " << r.seconds << " s, cost " << r.initial_cost << " -> "
+      << r.final_cost << "\n";
+  for (std::size_t i = 0; i < r.parameters.size(); ++i)
+    out << "  " << r.parameters[i].name << " = " << r.value[i] << " +- " << r.standard_error[i] << "  (start "
+        << r.start[i] << ")\n";
+  for (const FixedParameter &f : r.fixed)
+    out << "  " << f.name << " = " << f.value << "  (fixed: the case's value)\n";
+  return out.str();
+}
+
+CaseDescription with_calibrated_continuum(const CaseDescription &c, const std::string &fragment)
+{
+  const bool json = c.file.size() >= 5 && c.file.substr(c.file.size() - 5) == ".json";
+  const std::string text = (json ? json_to_prm(c.text, c.file) : c.text) + "\n" + fragment;
+  // Parsed as a .prm beside the case (its includes resolve as the case's do), then named as the case.
+  CaseDescription calibrated = parse_case(text, json ? c.file.substr(0, c.file.size() - 5) + ".prm" : c.file);
+  calibrated.file = c.file;
+  return calibrated;
+}
+
+CaseDescription calibrate_for_pair(const CaseDescription &c, const Response *dem, const fs::path &dir, MPI_Comm comm)
+{
+  std::vector<FitTarget> targets;
+  if (dem)
+    targets.push_back(make_target((dir / results_file("dem")).string(), *dem, c.program,
+                                  -c.specimen.isotropic_pressure, c.continuum.point_substeps, 1.0));
+  for (FitTarget &t : case_targets(c))
+    targets.push_back(std::move(t));
+  try {
+    const StartingValues start = starting_values(c.continuum, targets, c.calibration);
+    CalibrationResult r = calibrate(start.parameters, targets, c.calibration);
+    r.notes.insert(r.notes.begin(), start.notes.begin(), start.notes.end());
+    const std::string fragment = calibrated_fragment(r, fragment_comment(c.file, targets.size())); // as written
+    if (rank_in(comm) == 0) {
+      log::info(calibration_summary(r) + "calibrated section: " + fragment_path(c, dir).string());
+      for (const auto &w : r.warnings)
+        log::warning(c.file + ": calibration/free parameters: " + w);
+      write_fit_report(dir / "calibration", c.calibration.output_file, r, targets, c.file);
+    }
+    return with_calibrated_continuum(c, fragment);
+  } catch (const CalibrationError &e) {
+    throw CaseError(c.file, e.parameter, e.what());
+  }
+}
+
+std::optional<CaseDescription> calibrated_case_in(const CaseDescription &c, const fs::path &dir)
+{
+  const fs::path file = fragment_path(c, dir);
+  if (!pair_calibrates(c) || !fs::is_regular_file(file))
+    return std::nullopt;
+  return with_calibrated_continuum(c, read_parameter_file(file.string(), "calibrated continuum section (.prm)"));
+}
+
+} // namespace geocomp::cli
