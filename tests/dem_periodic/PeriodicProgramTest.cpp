@@ -1,0 +1,99 @@
+// The stand-alone RVE programs: servo isotropic compression to a pressure, triaxial shear
+// at constant lateral stress; the same bits for repeated runs.
+#include "dem/periodic/PeriodicProgram.h"
+#include "TestCells.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstring>
+
+using namespace geocomp::dem;
+
+namespace {
+struct Consolidated
+{
+  PeriodicCell cell;
+  CompressionResult compression;
+};
+
+Consolidated consolidated_rve(const test::RveSetup& s)
+{
+  PeriodicCell cell = test::grown_rve(s);
+  PeriodicCell::Parameters cp = cell.parameters();
+  cp.friction = 0.5;
+  cp.local_damping = 0.2;
+  cell.set_parameters(cp);
+  cell.control().set_parameters(MixedControl::Parameters{0.2, 3.0});
+  IsotropicCompression iso;
+  iso.pressure = s.pressure;
+  iso.tolerance = 0.01;
+  iso.unbalanced = 0.02;
+  const CompressionResult r = compress_isotropic(cell, iso);
+  return Consolidated{std::move(cell), r};
+}
+
+TriaxialShear triaxial(const test::RveSetup& s, double strain)
+{
+  TriaxialShear t;
+  t.axis = 2;
+  t.lateral_pressure = s.pressure;
+  t.strain_rate = 2.0;  // inertial number 2 * 2e-3 * sqrt(2650 / 1e5) = 6.5e-4
+  t.axial_strain = strain;
+  t.record_interval = 200;
+  return t;
+}
+}  // namespace
+
+TEST(PeriodicProgram, IsotropicCompressionReachesThePressureByServoThenTriaxialShearRaisesTheDeviator)
+{
+  const test::RveSetup s;
+  const auto t0 = std::chrono::steady_clock::now();
+  Consolidated c = consolidated_rve(s);
+  ASSERT_TRUE(c.compression.converged) << "after " << c.compression.steps << " steps, stress\n" << c.compression.stress;
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(c.compression.stress(a, a), -s.pressure, 0.01 * s.pressure);
+  EXPECT_GT(c.compression.packing_fraction, 0.55);
+  EXPECT_GT(c.cell.coordination(), 3.5);
+  const auto recs = shear_triaxial(c.cell, triaxial(s, 0.03));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_GT(recs.size(), 10u);
+  // The deviator rises from ~0 and is well up by 1 % axial strain.
+  EXPECT_LT(std::abs(recs.front().deviator), 0.05 * s.pressure);
+  const auto at = [&](double strain) {
+    for (const TriaxialRecord& r : recs)
+      if (r.axial_strain >= strain) return r;
+    return recs.back();
+  };
+  EXPECT_GT(at(0.002).deviator, 0.1 * s.pressure);
+  EXPECT_GT(at(0.01).deviator, at(0.002).deviator);
+  EXPECT_GT(at(0.01).deviator, 0.5 * s.pressure);
+  // The lateral stresses stay at -p by servo (after the first records).
+  for (std::size_t k = 2; k < recs.size(); ++k) EXPECT_LT(recs[k].lateral_error, 0.05) << "record " << k;
+  // A loose-to-medium packing first contracts.
+  EXPECT_LT(at(0.002).volumetric_strain, 0.0);
+  std::printf("[ RVE      ] N = %zu, compression %llu steps, phi = %.4f, Z = %.2f; q/p at 0.2, 1, 3 %%: %.3f %.3f %.3f;"
+              " eps_v at 3 %%: %.4f; %.2f s\n",
+              c.cell.n_particles(), (unsigned long long)c.compression.steps, c.compression.packing_fraction,
+              c.cell.coordination(), at(0.002).deviator / s.pressure, at(0.01).deviator / s.pressure,
+              recs.back().deviator / s.pressure, recs.back().volumetric_strain, seconds);
+}
+
+TEST(PeriodicProgram, RepeatedRunsGiveTheSameBits)
+{
+  test::RveSetup s;
+  s.particles = 120;
+  const auto run = [&] {
+    Consolidated c = consolidated_rve(s);
+    shear_triaxial(c.cell, triaxial(s, 0.002));
+    return c;
+  };
+  const Consolidated a = run(), b = run();
+  ASSERT_EQ(a.cell.n_particles(), b.cell.n_particles());
+  EXPECT_EQ(a.cell.steps(), b.cell.steps());
+  EXPECT_EQ(0, std::memcmp(a.cell.particles().x.data(), b.cell.particles().x.data(), a.cell.n_particles() * sizeof(Vec3)));
+  EXPECT_EQ(0, std::memcmp(a.cell.particles().v.data(), b.cell.particles().v.data(), a.cell.n_particles() * sizeof(Vec3)));
+  const Mat3 sa = a.cell.stress().total(), sb = b.cell.stress().total();
+  const Mat3 ha = a.cell.cell().h(), hb = b.cell.cell().h();
+  EXPECT_EQ(0, std::memcmp(sa.data(), sb.data(), sizeof(Mat3)));
+  EXPECT_EQ(0, std::memcmp(ha.data(), hb.data(), sizeof(Mat3)));
+}
