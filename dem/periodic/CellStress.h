@@ -11,6 +11,10 @@
 // moment of the contact forces and vanishes at equilibrium. The kinetic (Reynolds) part of
 // the fluctuating velocities u is optional,
 // $$ \sigma^{k} = -\frac{1}{V}\sum_p m_p\,u_p\otimes u_p \qquad\text{(kinetic stress)}. $$
+// The servo reads the elastic share $\sigma^{el}$ (the normal dashpots left out): their
+// force $c_n v_n$ is proportional to L itself ($v_n$ contains $n\cdot Ll$), and it would feed
+// the servo's output straight back into its input (measured: the normal stresses then
+// chattered between the two rate limits 0.5 % short of the target).
 // The servo needs the cell's stiffness against each component of L: an affine strain
 // increment $\Delta\varepsilon_{ab}$ changes overlap c by $-n_a l_b\Delta\varepsilon_{ab}$ and the
 // stress by
@@ -28,6 +32,7 @@ struct CellStress
 {
   Mat3 contact = Mat3::Zero();    ///< symmetric Love-Weber contact stress [Pa], tension positive
   Mat3 kinetic = Mat3::Zero();    ///< kinetic stress of the fluctuations [Pa] (zero unless asked for)
+  Mat3 elastic = Mat3::Zero();    ///< the same with the normal dashpots left out [Pa] (what the servo reads)
   Mat3 skew = Mat3::Zero();       ///< skew part of -(1/V) sum F (x) l [Pa] (unbalanced contact moments)
   Mat3 stiffness = Mat3::Zero();  ///< K_ab [Pa] of the servo
   std::size_t contacts = 0;       ///< pairs carrying force

@@ -45,7 +45,7 @@ bool MixedControl::any_stress() const
 Mat3 MixedControl::velocity_gradient(const CellStress& stress, double dt) const
 {
   Mat3 l;
-  const Mat3 sigma = stress.total();
+  const Mat3 sigma = stress.elastic;
   const double cap = p_.max_strain_rate;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {

@@ -8,10 +8,12 @@
 // proportional law (Itasca's servo for walls, here on the cell's strain):
 // $$ L_{ab} = \mathrm{clamp}\Big(\frac{g\,(\sigma^*_{ab} - \sigma_{ab})}{K_{ab}\,\Delta t},\ \pm\dot\varepsilon_{max}\Big)
 //    \qquad\text{(servo)}, $$
-// with $K_{ab}$ the cell's stiffness (CellStress.h) and g < 1 the fraction of the error
+// with $\sigma$ the contacts' elastic stress and $K_{ab}$ the cell's stiffness (CellStress.h), g < 1 the fraction of the error
 // removed per step if the packing responded affinely (it relaxes, so the servo keeps
 // pushing while the error lasts). Without contacts ($K_{ab} = 0$) the component moves at
-// the largest rate toward the target. Tension positive: a target $\sigma^* = -p$ above
+// the largest rate toward the target. A shear component is best servoed through the upper
+// triangle of L ($L_{ab}$, a < b, with $L_{ba} = 0$): H then stays upper triangular.
+// Tension positive: a target $\sigma^* = -p$ above
 // the current stress compresses the cell ($L_{aa} < 0$).
 #pragma once
 

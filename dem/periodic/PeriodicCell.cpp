@@ -154,7 +154,7 @@ double PeriodicCell::packing_fraction() const
 
 double PeriodicCell::unbalanced_force_ratio() const
 {
-  if (stress_.contacts == 0 || store_.size() == 0) return 1.0;
+  if (!(stress_.mean_contact_force > 0.0) || store_.size() == 0) return 1.0;
   double net = 0.0;
   for (const Vec3& f : store_.force) net += f.norm();
   return net / double(store_.size()) / stress_.mean_contact_force;

@@ -9,8 +9,9 @@
 // so sphere_sphere_kinematics() gets $v_i = u_i$, $v_j = u_j + Ll$ and the branch l; spins
 // are absolute. The force on j is $F = F_n n + F_t$ (-F on i), the torques
 // $T = -(R - \delta/2)\,n\times F_t$ on each (plus $\pm M_r$ for rolling laws), as in the
-// wall-box engine (ContactPass.cpp). The same loop sums the Love-Weber stress and the
-// servo stiffness (CellStress.h). Pairs are visited in list order: the same bits on every
+// wall-box engine (ContactPass.cpp). The same loop sums the Love-Weber stress, its
+// elastic share (the normal spring $F_n^{el}$ and the tangential force) and the servo
+// stiffness (CellStress.h). Pairs are visited in list order: the same bits on every
 // run. Laws with a cohesion part are refused by the cell (their reach beyond contact is
 // not in the periodic list).
 #pragma once
@@ -47,7 +48,7 @@ void periodic_contact_pass(const Law& law, const PeriodicPassInput& in, CellStre
     s.torque[p].setZero();
   }
   const Mat3& h = in.cell.h();
-  Mat3 fl = Mat3::Zero(), stiff = Mat3::Zero();
+  Mat3 fl = Mat3::Zero(), fl_elastic = Mat3::Zero(), stiff = Mat3::Zero();
   double force_sum = 0.0;
   std::size_t carrying = 0;
   for (std::size_t c = 0; c < nl.pairs.size(); ++c) {
@@ -88,8 +89,9 @@ void periodic_contact_pass(const Law& law, const PeriodicPassInput& in, CellStre
       s.torque[i] -= f.moment;
     }
     fl.noalias() += load * l.transpose();  // Love-Weber
-    const double kn = law.normal().evaluate(k).stiffness;
-    stiff.noalias() += kn * (k.normal * l.transpose()).cwiseAbs2();  // servo stiffness K_ab
+    const NormalResponse nr = law.normal().evaluate(k);
+    fl_elastic.noalias() += (nr.elastic * k.normal + f.tangential) * l.transpose();
+    stiff.noalias() += nr.stiffness * (k.normal * l.transpose()).cwiseAbs2();  // servo stiffness K_ab
     force_sum += load.norm();
     ++carrying;
   }
@@ -97,6 +99,8 @@ void periodic_contact_pass(const Law& law, const PeriodicPassInput& in, CellStre
   const Mat3 sigma = -inv_v * fl;  // tension positive
   out.contact = 0.5 * (sigma + sigma.transpose());
   out.skew = 0.5 * (sigma - sigma.transpose());
+  const Mat3 sigma_el = -inv_v * fl_elastic;
+  out.elastic = 0.5 * (sigma_el + sigma_el.transpose());
   out.stiffness = inv_v * stiff;
   out.contacts = carrying;
   out.mean_contact_force = carrying > 0 ? force_sum / double(carrying) : 0.0;

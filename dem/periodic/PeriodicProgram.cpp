@@ -7,6 +7,13 @@
 namespace geocomp::dem {
 
 namespace {
+/// sigma_ab = 0 for a != b through the upper triangle of L (the lower one held at zero).
+void hold_shear_stress_free(MixedControl& control)
+{
+  for (int a = 0; a < 3; ++a)
+    for (int b = a + 1; b < 3; ++b) control.set_stress(a, b, 0.0);
+}
+
 bool isotropic_reached(const PeriodicCell& cell, const IsotropicCompression& c)
 {
   const Mat3 s = cell.stress().total();
@@ -26,6 +33,7 @@ CompressionResult compress_isotropic(PeriodicCell& cell, const IsotropicCompress
   MixedControl& control = cell.control();
   control.set_velocity_gradient(Mat3::Zero());
   for (int a = 0; a < 3; ++a) control.set_stress(a, a, -c.pressure);
+  hold_shear_stress_free(control);
   cell.evaluate();
   CompressionResult r;
   while (r.steps < c.max_steps) {
@@ -67,6 +75,7 @@ std::vector<TriaxialRecord> shear_triaxial(PeriodicCell& cell, const TriaxialShe
   control.set_velocity_gradient(Mat3::Zero());
   control.set_strain_rate(t.axis, t.axis, -t.strain_rate);
   for (int k = 1; k <= 2; ++k) control.set_stress((t.axis + k) % 3, (t.axis + k) % 3, -t.lateral_pressure);
+  hold_shear_stress_free(control);
   cell.evaluate();
   const double edge0 = cell.cell().h().col(t.axis).norm(), volume0 = cell.cell().volume();
   std::vector<TriaxialRecord> out;

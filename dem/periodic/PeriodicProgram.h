@@ -4,12 +4,13 @@
 // element tests by itself, under mixed control (MixedControl.h), as Yade's
 // PeriTriaxController runs them:
 //  - compress_isotropic(): the three normal stresses follow $\sigma^* = -p$ (tension
-//    positive), the shear components of L are held at zero; done when every normal
+//    positive), the shear stresses follow zero through the upper triangle of L (the
+//    lower one held at zero, so H stays upper triangular); done when every normal
 //    stress is within the tolerance of $-p$, the shear stresses below tolerance times p,
 //    and the unbalanced-force ratio below its threshold, all at one check;
 //  - shear_triaxial(): $L_{aa} = -\dot\varepsilon$ along the axial axis a (compression),
-//    the two lateral normal stresses held at $-p$ by the servo, shear components of L
-//    zero, until the axial (logarithmic) strain $\varepsilon_a = -\ln(|h_a|/|h_{a,0}|)$
+//    the two lateral normal stresses held at $-p$ and the shear stresses at zero by the
+//    servo, until the axial (logarithmic) strain $\varepsilon_a = -\ln(|h_a|/|h_{a,0}|)$
 //    reaches its end. Recorded every `record_interval` steps: $\varepsilon_a$, the
 //    volumetric strain $\ln(V/V_0)$ (tension positive), the deviator
 //    $q = \tfrac12(\sigma_{bb} + \sigma_{cc}) - \sigma_{aa}$ (positive when the axial

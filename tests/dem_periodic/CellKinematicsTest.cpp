@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace geocomp::dem;
 
@@ -58,22 +59,24 @@ TEST(PeriodicCell, APureAffineGradientWithoutContactsKeepsTheFluctuationsAtZeroA
   const std::uint64_t n = 2000;
   cell.run(n);
   const double t = double(n) * cp.time_step;
-  EXPECT_DOUBLE_EQ(cell.time(), t);
+  EXPECT_NEAR(cell.time(), t, 1e-12 * t);
+  // exp(L dt)^n H0 against exp(L t) H0: n products, each rounding by a few epsilon.
+  const double tol = 4.0 * double(n) * std::numeric_limits<double>::epsilon();
   Mat3 e = Mat3::Zero();
   e(0, 0) = std::exp(a * t);
   e(1, 1) = std::exp(b * t);
   e(2, 2) = std::exp(c * t);
   e(0, 1) = g * (std::exp(a * t) - std::exp(b * t)) / (a - b);
   const Mat3 h_exact = e * h0;
-  EXPECT_LT((cell.cell().h() - h_exact).norm(), 1e-13 * h0.norm());
-  EXPECT_NEAR(cell.cell().volume(), std::exp((a + b + c) * t) * h0.determinant(), 1e-13 * h0.determinant());
+  EXPECT_LT((cell.cell().h() - h_exact).norm(), tol * h0.norm());
+  EXPECT_NEAR(cell.cell().volume(), std::exp((a + b + c) * t) * h0.determinant(), tol * h0.determinant());
   EXPECT_EQ(cell.stress().contacts, 0u);
   for (Index p = 0; p < 5; ++p) {
     EXPECT_EQ(cell.fluctuation(p), Vec3::Zero()) << "sphere " << p;
     // Carried affinely: the same reduced coordinates (up to a wrap by whole cell vectors).
     Vec3 ds = cell.cell().reduced(cell.position(p)) - CellMatrix(h0).reduced(x0[p]);
     for (int k = 0; k < 3; ++k) ds[k] -= std::round(ds[k]);
-    EXPECT_LT(ds.norm(), 1e-12) << "sphere " << p;
+    EXPECT_LT(ds.norm(), tol) << "sphere " << p;
     EXPECT_LT((cell.velocity(p) - l * cell.position(p)).norm(), 1e-15);
   }
 }
@@ -84,13 +87,14 @@ TEST(MixedControl, AServoedComponentCompressesWhenTheStressIsAboveItsCompressive
   control.set_stress(0, 0, -1e5);
   control.set_strain_rate(2, 2, -0.1);
   CellStress s;
-  s.contact(0, 0) = -5e4;  // less compressive than the target
+  s.elastic(0, 0) = -5e4;  // less compressive than the target (the servo reads the elastic share)
+  s.contact(0, 0) = -2e5;  // the dashpots' share is not the servo's business
   s.stiffness(0, 0) = 1e8;
   const double dt = 1e-6;
   const Mat3 l = control.velocity_gradient(s, dt);
   EXPECT_DOUBLE_EQ(l(0, 0), -2.0);                    // 0.5 * (-5e4) / (1e8 * 1e-6) = -250, capped
   EXPECT_DOUBLE_EQ(l(2, 2), -0.1);
-  s.contact(0, 0) = -1.001e5;                         // slightly beyond: extend a little
+  s.elastic(0, 0) = -1.001e5;                         // slightly beyond: extend a little
   EXPECT_NEAR(control.velocity_gradient(s, dt)(0, 0), 0.5 * 100.0 / (1e8 * dt), 1e-12);
   s.stiffness.setZero();                              // no contact: the largest rate toward it
   EXPECT_DOUBLE_EQ(control.velocity_gradient(s, dt)(0, 0), 2.0);

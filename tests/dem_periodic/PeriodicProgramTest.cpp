@@ -11,28 +11,6 @@
 using namespace geocomp::dem;
 
 namespace {
-struct Consolidated
-{
-  PeriodicCell cell;
-  CompressionResult compression;
-};
-
-Consolidated consolidated_rve(const test::RveSetup& s)
-{
-  PeriodicCell cell = test::grown_rve(s);
-  PeriodicCell::Parameters cp = cell.parameters();
-  cp.friction = 0.5;
-  cp.local_damping = 0.2;
-  cell.set_parameters(cp);
-  cell.control().set_parameters(MixedControl::Parameters{0.2, 3.0});
-  IsotropicCompression iso;
-  iso.pressure = s.pressure;
-  iso.tolerance = 0.01;
-  iso.unbalanced = 0.02;
-  const CompressionResult r = compress_isotropic(cell, iso);
-  return Consolidated{std::move(cell), r};
-}
-
 TriaxialShear triaxial(const test::RveSetup& s, double strain)
 {
   TriaxialShear t;
@@ -49,7 +27,7 @@ TEST(PeriodicProgram, IsotropicCompressionReachesThePressureByServoThenTriaxialS
 {
   const test::RveSetup s;
   const auto t0 = std::chrono::steady_clock::now();
-  Consolidated c = consolidated_rve(s);
+  test::Consolidated c = test::consolidated_rve(s);
   ASSERT_TRUE(c.compression.converged) << "after " << c.compression.steps << " steps, stress\n" << c.compression.stress;
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(c.compression.stress(a, a), -s.pressure, 0.01 * s.pressure);
   EXPECT_GT(c.compression.packing_fraction, 0.55);
@@ -83,11 +61,11 @@ TEST(PeriodicProgram, RepeatedRunsGiveTheSameBits)
   test::RveSetup s;
   s.particles = 120;
   const auto run = [&] {
-    Consolidated c = consolidated_rve(s);
+    test::Consolidated c = test::consolidated_rve(s);
     shear_triaxial(c.cell, triaxial(s, 0.002));
     return c;
   };
-  const Consolidated a = run(), b = run();
+  const test::Consolidated a = run(), b = run();
   ASSERT_EQ(a.cell.n_particles(), b.cell.n_particles());
   EXPECT_EQ(a.cell.steps(), b.cell.steps());
   EXPECT_EQ(0, std::memcmp(a.cell.particles().x.data(), b.cell.particles().x.data(), a.cell.n_particles() * sizeof(Vec3)));

@@ -5,6 +5,8 @@
 #include "dem/periodic/PeriodicProgram.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace geocomp::dem::test {
 
@@ -49,6 +51,30 @@ inline PeriodicCell grown_rve(const RveSetup& s)
   const GrowthResult r = grow_radii(cell, g);
   if (!r.reached) throw std::runtime_error("grown_rve: the growth did not reach its pressure");
   return cell;
+}
+
+struct Consolidated
+{
+  PeriodicCell cell;
+  CompressionResult compression;
+};
+
+/// grown_rve(), then friction 0.5, local damping 0.2 and servo isotropic compression to
+/// the pressure (1 % on every stress component, unbalanced-force ratio 0.02).
+inline Consolidated consolidated_rve(const RveSetup& s)
+{
+  PeriodicCell cell = grown_rve(s);
+  PeriodicCell::Parameters cp = cell.parameters();
+  cp.friction = 0.5;
+  cp.local_damping = 0.2;
+  cell.set_parameters(cp);
+  cell.control().set_parameters(MixedControl::Parameters{0.2, 3.0});
+  IsotropicCompression iso;
+  iso.pressure = s.pressure;
+  iso.tolerance = 0.01;
+  iso.unbalanced = 0.02;
+  const CompressionResult r = compress_isotropic(cell, iso);
+  return Consolidated{std::move(cell), r};
 }
 
 }  // namespace geocomp::dem::test
