@@ -29,6 +29,7 @@ void PeriodicCell::set_parameters(const Parameters& p)
   if (!(p.skin_ratio > 0.0)) throw std::invalid_argument("PeriodicCell: the skin ratio must be positive");
   p_ = p;
   integrator_.set_local_damping(p.local_damping);
+  loads_current_ = false;  // friction or the kinetic stress may have changed
 }
 
 Index PeriodicCell::add_sphere(const Vec3& x, double radius, double density, const Vec3& u, const Vec3& omega)
@@ -39,6 +40,7 @@ Index PeriodicCell::add_sphere(const Vec3& x, double radius, double density, con
   store_.v[k] = u;
   store_.omega[k] = omega;
   lists_valid_ = false;
+  loads_current_ = false;
   return k;
 }
 
@@ -46,6 +48,7 @@ void PeriodicCell::set_velocity(Index p, const Vec3& u, const Vec3& omega)
 {
   store_.v.at(p) = u;
   store_.omega.at(p) = omega;
+  loads_current_ = false;
 }
 
 void PeriodicCell::scale_radii(double factor)
@@ -61,6 +64,7 @@ void PeriodicCell::scale_radii(double factor)
     store_.inv_inertia[p] = 1.0 / (0.4 * store_.mass[p] * store_.radius[p] * store_.radius[p]);
   }
   grown_ += grown;
+  loads_current_ = false;
 }
 
 void PeriodicCell::build_lists()
@@ -124,18 +128,25 @@ void PeriodicCell::evaluate()
 {
   if (!lists_valid_) build_lists();
   forces(0.0);
+  loads_current_ = true;
+}
+
+void PeriodicCell::refresh()
+{
+  if (!loads_current_ || !lists_valid_) evaluate();
 }
 
 void PeriodicCell::step()
 {
   const double dt = p_.time_step;
   if (!(dt > 0.0)) throw std::logic_error("PeriodicCell: set a positive time step before stepping");
-  if (!lists_valid_) evaluate();
+  refresh();
   l_ = control_.velocity_gradient(stress_, dt);
   kick(dt);
   drift(dt);
   forces(dt);
   kick(dt);
+  loads_current_ = true;
   time_ += dt;
   ++steps_;
 }

@@ -79,6 +79,10 @@ public:
   /// Evaluates the contact forces and the stress at the current state without moving
   /// (history not advanced): the state a freshly built cell reports.
   void evaluate();
+  /// evaluate() unless the loads and the stress already belong to the current state (after
+  /// a step, nothing changed since): a program that starts on a running cell then leaves
+  /// its trajectory exactly as continued stepping would.
+  void refresh();
 
   // State.
   std::size_t n_particles() const { return store_.size(); }
@@ -130,6 +134,7 @@ private:
   std::vector<Vec3> x_ref_;               ///< positions at the last build
   double grown_ = 0.0;                    ///< [m] largest radius growth since the last build
   bool lists_valid_ = false;
+  bool loads_current_ = false;            ///< force, torque and stress belong to the state
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
 };

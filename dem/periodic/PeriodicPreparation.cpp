@@ -66,7 +66,7 @@ GrowthResult grow_radii(PeriodicCell& cell, const RadiusGrowth& g)
   cell.set_velocity_gradient(Mat3::Zero());
   GrowthResult r;
   const double factor = 1.0 + g.rate * double(g.interval);
-  cell.evaluate();
+  cell.refresh();
   while (r.steps < g.max_steps) {
     if (cell.stress().pressure() >= g.pressure) {
       r.reached = true;

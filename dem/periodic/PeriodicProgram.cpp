@@ -34,7 +34,7 @@ CompressionResult compress_isotropic(PeriodicCell& cell, const IsotropicCompress
   control.set_velocity_gradient(Mat3::Zero());
   for (int a = 0; a < 3; ++a) control.set_stress(a, a, -c.pressure);
   hold_shear_stress_free(control);
-  cell.evaluate();
+  cell.refresh();
   CompressionResult r;
   while (r.steps < c.max_steps) {
     cell.step();
@@ -76,7 +76,7 @@ std::vector<TriaxialRecord> shear_triaxial(PeriodicCell& cell, const TriaxialShe
   control.set_strain_rate(t.axis, t.axis, -t.strain_rate);
   for (int k = 1; k <= 2; ++k) control.set_stress((t.axis + k) % 3, (t.axis + k) % 3, -t.lateral_pressure);
   hold_shear_stress_free(control);
-  cell.evaluate();
+  cell.refresh();
   const double edge0 = cell.cell().h().col(t.axis).norm(), volume0 = cell.cell().volume();
   std::vector<TriaxialRecord> out;
   out.push_back(triaxial_record(cell, t, edge0, volume0));
