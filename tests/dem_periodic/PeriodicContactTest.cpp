@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 using namespace geocomp::dem;
@@ -26,6 +28,7 @@ HertzMindlin hertz_mindlin()
 struct PairRun
 {
   std::vector<Vec3> force_i, force_j, torque_j;
+  bool through_image = false;  ///< the pair was listed with a nonzero shift
 };
 
 /// Two spheres at x_i and x_j (j given by any image) with velocities, in cell h under the
@@ -45,12 +48,16 @@ PairRun run_pair(const ContactModel& law, const Mat3& h, const Mat3& l, const Ve
     r.force_i.push_back(cell.force(0));
     r.force_j.push_back(cell.force(1));
     r.torque_j.push_back(cell.torque(1));
+    for (const PeriodicPair& p : cell.neighbours().pairs)
+      r.through_image = r.through_image || p.shift != std::array<std::int32_t, 3>{{0, 0, 0}};
   }
   return r;
 }
 
 void expect_same_loads(const PairRun& across, const PairRun& inside)
 {
+  EXPECT_TRUE(across.through_image);
+  EXPECT_FALSE(inside.through_image);
   ASSERT_EQ(across.force_j.size(), inside.force_j.size());
   const double scale = inside.force_j.front().norm();
   ASSERT_GT(scale, 0.0);
@@ -68,14 +75,17 @@ void expect_same_loads(const PairRun& across, const PairRun& inside)
 TEST(PeriodicContact, TwoSpheresTouchingAcrossTheBoundaryFeelTheSameForceAsInsideTheCell)
 {
   // Centres 0.125 apart along x (overlap 1/64), once straddling the face x = 0 and once in
-  // the middle of the cell, under a gradient with stretch and shear; both laws.
+  // the middle of the cell, under a gradient with stretch and shear; three laws (linear,
+  // Hertz-Mindlin, linear with rolling resistance and its ContactMemory).
   Mat3 l = Mat3::Zero();
   l(0, 0) = -0.5;
   l(0, 1) = 0.3;
   const Mat3 h = Mat3::Identity();
   const Vec3 a(0.0625, 0.5, 0.5), b(0.9375, 0.5, 0.5);          // across x = 0
   const Vec3 c(0.4375, 0.5, 0.5), d(0.5625, 0.5, 0.5);          // inside
-  const ContactModel laws[2] = {test::periodic_linear_law(1e6, 0.5), hertz_mindlin()};
+  const LinearRollingResistance rolling(LinearNormal::with_stiffness(1e6, 0.5), LinearTangential::with_ratio(2.0 / 7.0),
+                                        LinearRolling(LinearRolling::Parameters{0.3, 1.0}));
+  const ContactModel laws[3] = {test::periodic_linear_law(1e6, 0.5), hertz_mindlin(), rolling};
   for (const ContactModel& law : laws) {
     // i = b, j = a: j's image a + h1 is b's partner, 0.125 further along x.
     const PairRun across = run_pair(law, h, l, b, a);
@@ -86,16 +96,17 @@ TEST(PeriodicContact, TwoSpheresTouchingAcrossTheBoundaryFeelTheSameForceAsInsid
 
 TEST(PeriodicContact, TwoSpheresTouchingThroughATiltedFaceFeelTheSameForceAsInsideTheCell)
 {
-  // A sheared cell: h2 = (0.25, 1, 0). Sphere j sits near the top face y = 1 and touches
-  // i near y = 0 through its image x_j - h2.
+  // A sheared cell: h2 = (0.25, 1, 0). Sphere i sits near the top face y = 1 and touches
+  // j, whose centre lies beyond that face and is wrapped to near y = 0, through j's image
+  // x_j + h2.
   Mat3 h = Mat3::Identity();
   h(0, 1) = 0.25;
   Mat3 l = Mat3::Zero();
   l(0, 1) = 0.4;
   l(1, 1) = -0.2;
   const Vec3 branch(0.03125, 0.0625, -0.09375);  // |branch| < 2R
-  const Vec3 xi(0.5, 0.0625, 0.5);
-  const PairRun across = run_pair(ContactModel(test::periodic_linear_law(1e6, 0.5)), h, l, xi, xi + branch + h.col(1));
+  const Vec3 xi(0.5, 0.96875, 0.5);
+  const PairRun across = run_pair(ContactModel(test::periodic_linear_law(1e6, 0.5)), h, l, xi, xi + branch);
   const Vec3 yi(0.5, 0.4375, 0.5);
   const PairRun inside = run_pair(ContactModel(test::periodic_linear_law(1e6, 0.5)), h, l, yi, yi + branch);
   expect_same_loads(across, inside);
