@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <vector>
 
 using namespace geocomp::dem;
 
@@ -102,4 +103,32 @@ TEST(PeriodicProgram, AProgramStartedOnARunningCellContinuesItsTrajectoryBitForB
   c.evaluate();
   c.run(150);
   EXPECT_NE(0, std::memcmp(a.particles().x.data(), c.particles().x.data(), a.n_particles() * sizeof(Vec3)));
+}
+
+TEST(PeriodicProgram, CellsSteppedOnSeparateThreadsGiveTheBitsOfASerialRun)
+{
+  // The coupling will run one RVE per thread: a cell holds no shared state.
+  test::RveSetup s;
+  s.particles = 120;
+  const PeriodicCell start = test::consolidated_rve(s).cell;
+  std::vector<PeriodicCell> serial(4, start), threaded(4, start);
+  const auto drive = [](PeriodicCell& c, int k) {
+    Mat3 l = Mat3::Zero();
+    l(2, 2) = -0.5 * (k + 1);
+    l(0, 1) = 0.3 * k;
+    c.set_velocity_gradient(l);
+    c.run(300);
+  };
+  for (int k = 0; k < 4; ++k) drive(serial[k], k);
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+  for (int k = 0; k < 4; ++k) drive(threaded[k], k);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(0, std::memcmp(serial[k].particles().x.data(), threaded[k].particles().x.data(),
+                             serial[k].n_particles() * sizeof(Vec3)))
+      << "cell " << k;
+    const Mat3 a = serial[k].stress().total(), b = threaded[k].stress().total();
+    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), sizeof(Mat3))) << "cell " << k;
+  }
+  EXPECT_NE(0, std::memcmp(serial[0].particles().x.data(), serial[1].particles().x.data(),
+                           serial[0].n_particles() * sizeof(Vec3)));
 }
