@@ -1,11 +1,12 @@
-// geocomp-bench-periodic N [seed] [axial strain]: the periodic RVE (dem/periodic) from
+// geocomp-bench-periodic N [seed] [axial strain] [strain rate]: the periodic RVE (dem/periodic) from
 // placement to triaxial shear, with its cost. Placement at eta_0 = 0.3, frictionless
 // radius growth to p/10 (local damping 0.3), friction 0.5, servo isotropic compression to
-// p = 100 kPa, triaxial shear at 2 /s with the lateral stresses at -p (the tests' RVE,
+// p = 100 kPa, triaxial shear at 2 /s (or the rate given) with the lateral stresses at -p (the tests' RVE,
 // tests/dem_periodic/TestCells.h, for any N). One thread; docs/dem.md, the periodic cell.
 #include "dem/periodic/PeriodicPreparation.h"
 #include "dem/periodic/PeriodicProgram.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -25,6 +26,7 @@ int main(int argc, char** argv)
   const std::size_t n = argc > 1 ? std::size_t(std::atol(argv[1])) : 500;
   const std::uint64_t seed = argc > 2 ? std::uint64_t(std::atoll(argv[2])) : 7;
   const double strain = argc > 3 ? std::atof(argv[3]) : 0.05;
+  const double rate = argc > 4 ? std::atof(argv[4]) : 2.0;
   const double k_n = 1e5, pressure = 1e5;
   RandomPlacement place;
   place.particles = n;
@@ -54,9 +56,10 @@ int main(int argc, char** argv)
   t0 = std::chrono::steady_clock::now();
   const CompressionResult c = compress_isotropic(cell, iso);
   const double t_iso = seconds_since(t0);
+  cell.control().set_parameters(MixedControl::Parameters{0.2, std::max(3.0, rate)});
   TriaxialShear t;
   t.lateral_pressure = pressure;
-  t.strain_rate = 2.0;
+  t.strain_rate = rate;
   t.axial_strain = strain;
   t.record_interval = 500;
   const std::uint64_t s0 = cell.steps();
@@ -69,8 +72,8 @@ int main(int argc, char** argv)
               n, (unsigned long long)seed, cp.time_step, t_place, (unsigned long long)grown.steps, t_grow,
               grown.packing_fraction, c.converged ? "converged" : "NOT converged", (unsigned long long)c.steps, t_iso,
               c.packing_fraction, cell.coordination());
-  std::printf("triaxial: %llu steps %.2f s = %.2f us per step = %.3f us per sphere-step; list builds %zu\n",
-              (unsigned long long)shear_steps, t_shear, 1e6 * t_shear / double(shear_steps),
+  std::printf("triaxial at %g /s (inertial number %.2g): %llu steps %.2f s = %.2f us per step = %.3f us per sphere-step; list builds %zu\n",
+              rate, rate * 2e-3 * std::sqrt(2650.0 / pressure), (unsigned long long)shear_steps, t_shear, 1e6 * t_shear / double(shear_steps),
               1e6 * t_shear / double(shear_steps) / double(n), cell.neighbours().builds());
   double q_max = 0.0;
   for (const TriaxialRecord& r : recs) q_max = std::max(q_max, r.deviator);

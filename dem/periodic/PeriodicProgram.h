@@ -11,7 +11,8 @@
 //  - shear_triaxial(): $L_{aa} = -\dot\varepsilon$ along the axial axis a (compression),
 //    the two lateral normal stresses held at $-p$ and the shear stresses at zero by the
 //    servo, until the axial (logarithmic) strain $\varepsilon_a = -\ln(|h_a|/|h_{a,0}|)$
-//    reaches its end. Recorded every `record_interval` steps: $\varepsilon_a$, the
+//    reaches its end (refused when the servo's largest rate is below the axial rate: the
+//    lateral stresses could not follow). Recorded every `record_interval` steps: $\varepsilon_a$, the
 //    volumetric strain $\ln(V/V_0)$ (tension positive), the deviator
 //    $q = \tfrac12(\sigma_{bb} + \sigma_{cc}) - \sigma_{aa}$ (positive when the axial
 //    stress is the more compressive), the mean pressure and the largest lateral error.

@@ -132,3 +132,18 @@ TEST(PeriodicProgram, CellsSteppedOnSeparateThreadsGiveTheBitsOfASerialRun)
   EXPECT_NE(0, std::memcmp(serial[0].particles().x.data(), serial[1].particles().x.data(),
                            serial[0].n_particles() * sizeof(Vec3)));
 }
+
+TEST(PeriodicProgram, TriaxialShearRefusesAnAxialRateTheLateralServoCouldNotFollow)
+{
+  PeriodicCell::Parameters cp;
+  cp.time_step = 1e-6;
+  PeriodicCell cell(CellMatrix::box(Vec3::Constant(0.1)), test::periodic_linear_law(1e5, 0.5), cp);
+  cell.add_sphere(Vec3::Constant(0.05), 0.01, 2650.0);
+  cell.control().set_parameters(MixedControl::Parameters{0.2, 3.0});
+  TriaxialShear t;
+  t.lateral_pressure = 1e5;
+  t.axial_strain = 0.01;
+  t.strain_rate = 8.0;
+  EXPECT_THROW(shear_triaxial(cell, t), std::invalid_argument);
+  EXPECT_EQ(cell.steps(), 0u);
+}
