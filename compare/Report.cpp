@@ -377,6 +377,20 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
       h << "<tr><td>" << html(k) << "</td><td>" << html(val) << "</td></tr>\n";
     h << "</table>\n";
   }
+  if (!in.calibration_curves.empty()) {
+    h << "<h2>Calibrated on, and predicted</h2>\n<p>The material point with the calibrated section against each "
+         "curve: rms difference relative to the curve's largest q (q, p) and to its volumetric range, at least "
+         "0.1 % (eps_v). A curve calibrated on shows the fit; a predicted one was held out of the fit.</p>\n"
+         "<table id=\"calibration-curves\"><tr><th>curve</th><th>role</th><th>rms q</th><th>rms p</th>"
+         "<th>rms eps_v</th></tr>\n";
+    for (std::size_t k = 0; k < in.calibration_curves.size(); ++k) {
+      const CalibrationCurve &c = in.calibration_curves[k];
+      const std::string path = "calibration_curves/" + std::to_string(k) + "/";
+      h << "<tr><td>" << html(c.curve) << "</td><td>" << html(c.role) << "</td>" << num_cell(c.rms_q, path + "rms_q")
+        << num_cell(c.rms_p, path + "rms_p") << num_cell(c.rms_eps_v, path + "rms_eps_v") << "</tr>\n";
+    }
+    h << "</table>\n";
+  }
   h << "<h2>Definitions</h2>\n<ul>"
        "<li>Initial modulus: least-squares slope over y &minus; y<sub>0</sub> &le; 25 % of the peak rise.</li>"
        "<li>Elastic limit: where the residual strain after unloading reaches 1 % (S0), interpolated between "
@@ -446,7 +460,15 @@ std::string metrics_json(const ReportInput &in)
   for (std::size_t k = 0; k < in.calibrated_parameters.size(); ++k)
     j << (k ? "," : "") << "\n    " << json_string(in.calibrated_parameters[k].first) << ": "
       << json_string(in.calibrated_parameters[k].second);
-  j << (in.calibrated_parameters.empty() ? "}" : "\n  }") << "\n}\n";
+  j << (in.calibrated_parameters.empty() ? "}" : "\n  }");
+  j << ",\n  \"calibration_curves\": [";
+  for (std::size_t k = 0; k < in.calibration_curves.size(); ++k) {
+    const CalibrationCurve &c = in.calibration_curves[k];
+    j << (k ? "," : "") << "\n    {\"curve\": " << json_string(c.curve) << ", \"role\": " << json_string(c.role)
+      << ", \"rms_q\": " << format_number(c.rms_q) << ", \"rms_p\": " << format_number(c.rms_p)
+      << ", \"rms_eps_v\": " << format_number(c.rms_eps_v) << "}";
+  }
+  j << (in.calibration_curves.empty() ? "]" : "\n  ]") << "\n}\n";
   return j.str();
 }
 

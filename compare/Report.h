@@ -34,6 +34,15 @@ struct NamedMetrics {
   MetricSet metrics;
 };
 
+/// A curve of a calibrated pair (docs/calibration.md): one the continuum was calibrated on, or
+/// the held-out one it predicts; rms differences of the material point's curve from it, each
+/// relative to the curve's scale (q and p: its largest q; eps_v: its range, at least 1e-3).
+struct CalibrationCurve {
+  std::string curve;
+  std::string role; ///< "calibrated on" or "predicted"
+  double rms_q = 0.0, rms_p = 0.0, rms_eps_v = 0.0;
+};
+
 struct ReportInput {
   std::string title = "geocomp: DEM and continuum compared";
   std::string case_name;
@@ -45,6 +54,7 @@ struct ReportInput {
   std::optional<RrVerdict> verdict;
   std::vector<DisplacementMap> maps; ///< mid-section maps (S0 Fig. 4 style)
   std::vector<std::pair<std::string, std::string>> calibrated_parameters;
+  std::vector<CalibrationCurve> calibration_curves;
   std::vector<std::string> notes;
 };
 

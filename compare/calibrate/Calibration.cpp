@@ -123,6 +123,30 @@ Identifiability check_identifiability(const Eigen::MatrixXd &J, const std::vecto
   return id;
 }
 
+std::vector<ResidualSummary> summarize_residuals(const FitTarget &t, const Response &model,
+                                                const std::vector<ResidualQuantity> &fitted)
+{
+  const std::vector<ResidualQuantity> all = all_quantities();
+  std::vector<double> r(residual_count(t, all.size()));
+  residuals(t, model, all, r.data());
+  std::vector<ResidualSummary> rows;
+  for (std::size_t j = 0; j < all.size(); ++j) {
+    ResidualSummary row;
+    row.quantity = all[j].name;
+    row.fitted = std::any_of(fitted.begin(), fitted.end(), [&](const ResidualQuantity &q) { return q.kind == all[j].kind; });
+    double sum = 0.0;
+    for (std::size_t k = j; k < r.size(); k += all.size()) {
+      const double v = r[k] / std::max(t.weight, 1e-300);
+      row.values.push_back(v);
+      sum += v * v;
+      row.max_abs = std::max(row.max_abs, std::abs(v));
+    }
+    row.rms = std::sqrt(sum / double(row.values.size()));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<FitTarget> &targets,
                             const CalibrationParameters &options)
 {
@@ -226,28 +250,9 @@ CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<
   }
 
   const continuum::MaterialParameters material = continuum::material_from_case(out.calibrated);
-  const std::vector<ResidualQuantity> all = all_quantities();
   for (const auto &t : targets) {
     out.fitted.push_back(simulate(t, material));
-    std::vector<double> r(residual_count(t, all.size()));
-    residuals(t, out.fitted.back(), all, r.data());
-    std::vector<ResidualSummary> rows;
-    for (std::size_t j = 0; j < all.size(); ++j) {
-      ResidualSummary row;
-      row.quantity = all[j].name;
-      row.fitted = std::any_of(out.quantities.begin(), out.quantities.end(),
-                               [&](const ResidualQuantity &q) { return q.kind == all[j].kind; });
-      double sum = 0.0;
-      for (std::size_t k = j; k < r.size(); k += all.size()) {
-        const double v = r[k] / std::max(t.weight, 1e-300);
-        row.values.push_back(v);
-        sum += v * v;
-        row.max_abs = std::max(row.max_abs, std::abs(v));
-      }
-      row.rms = std::sqrt(sum / double(row.values.size()));
-      rows.push_back(std::move(row));
-    }
-    out.residual_summary.push_back(std::move(rows));
+    out.residual_summary.push_back(summarize_residuals(t, out.fitted.back(), out.quantities));
   }
   out.warnings = unconstrained_strength(out.parameters, out.calibrated, out.fitted);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

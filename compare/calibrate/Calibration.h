@@ -61,6 +61,12 @@ struct CalibrationResult {
   std::vector<std::string> warnings;
 };
 
+/// How far `model` (the target's program on the material point) stays from the target in q, p
+/// and eps_v, each relative to the target's scales and without weights; `fitted` marks which
+/// quantities a fit used.
+std::vector<ResidualSummary> summarize_residuals(const FitTarget &target, const Response &model,
+                                                const std::vector<ResidualQuantity> &fitted);
+
 /// Fits the free parameters of `start` (already the starting values) to the targets.
 CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<FitTarget> &targets,
                             const CalibrationParameters &options);

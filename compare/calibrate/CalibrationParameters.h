@@ -38,6 +38,8 @@ struct CalibrationParameters {
   /// The continuum `pair` runs: "as given" (the continuum section) or "calibrated" (fitted to
   /// the pair's own DEM run and the targets first).
   std::string pair_continuum = "as given";
+  /// In a calibrated pair, the pair's DEM run "fitted" or "held out" (predicted, not fitted).
+  std::string pair_dem = "fitted";
 
   /// Every entry, written as the case file gives it (bounds as `name:lower:upper`,
   /// quantities as `name:weight`); read-only (the lists are rebuilt for writing).
@@ -57,6 +59,7 @@ struct CalibrationParameters {
     v("quantities", quantities);
     v("max iterations", p.max_iterations);
     v("pair continuum", p.pair_continuum);
+    v("pair dem", p.pair_dem);
     v("output file", p.output_file);
   }
 };

@@ -44,6 +44,10 @@ void declare_calibration(dealii::ParameterHandler &prm)
                     "pair's own DEM run (and to the targets above): the DEM runs first, the fit and its "
                     "report go to <output directory>/calibration/, and the material point and the FE cube "
                     "run the calibrated section (`pair --calibrate` sets calibrated).");
+  prm.declare_entry("pair dem", "fitted", Selection("fitted|held out"),
+                    "In a calibrated pair, whether the pair's own DEM run is among the curves fitted, or held "
+                    "out: fitted to the targets alone, the continuum then predicts the pair's program, and the "
+                    "report separates the curves calibrated on (fit residuals) from the one predicted.");
   prm.declare_entry("output file", "calibrated.prm", Anything(),
                     "The calibrated 'subsection continuum' fragment, written to <output directory>/calibration/; "
                     "case files pull it in with 'include <path>'.");
@@ -65,6 +69,7 @@ CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Rea
   p.max_iterations = prm.get_integer("max iterations");
   p.output_file = prm.get("output file");
   p.pair_continuum = prm.get("pair continuum");
+  p.pair_dem = prm.get("pair dem");
   prm.leave_subsection();
 
   for (const auto &w : weights) {

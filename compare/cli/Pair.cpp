@@ -94,6 +94,10 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
                                       ": run `geocomp pair` again.");
   }
   const CaseDescription &continuum_case = calibrated ? *calibrated : c;
+  if (calibrated) {
+    const auto dem = std::find_if(runs.begin(), runs.end(), [](const auto &r) { return r.first == "dem"; });
+    in.calibration_curves = calibration_curves(c, *calibrated, dem == runs.end() ? nullptr : &dem->second, dir);
+  }
   if (point && c.continuum.model == "nikolaevsky") {
     in.notes.push_back("No Rudnicki-Rice prediction: it is computed from the Mohr-Coulomb parameters, and the "
                        "case's model is nikolaevsky.");

@@ -8,6 +8,8 @@
 #include "compare/calibrate/FitReport.h"
 #include "compare/calibrate/StartingValues.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <sstream>
 
@@ -52,6 +54,11 @@ void validate_pair_calibration(const CaseDescription &c)
     throw CaseError(c.file, "calibration/pair continuum",
                     "calibrated: the continuum is fitted to the pair's DEM run and to calibration/targets, expected "
                     "'dem' among the engines or at least one target");
+  if (c.calibration.pair_dem == "held out" &&
+      (std::find(c.engines.begin(), c.engines.end(), "dem") == c.engines.end() || c.calibration.targets.empty()))
+    throw CaseError(c.file, "calibration/pair dem",
+                    "held out: the continuum is fitted to calibration/targets and predicts the pair's DEM run, "
+                    "expected 'dem' among the engines and at least one target");
   if (c.continuum.model == "nikolaevsky")
     throw CaseError(c.file, "calibration/pair continuum",
                     "calibrated: the calibration fits the Mohr-Coulomb parameters (E, nu, cohesion, friction, "
@@ -86,7 +93,7 @@ CaseDescription with_calibrated_continuum(const CaseDescription &c, const std::s
 CaseDescription calibrate_for_pair(const CaseDescription &c, const Response *dem, const fs::path &dir, MPI_Comm comm)
 {
   std::vector<FitTarget> targets;
-  if (dem)
+  if (dem && c.calibration.pair_dem == "fitted")
     targets.push_back(make_target((dir / results_file("dem")).string(), *dem, c.program,
                                   -c.specimen.isotropic_pressure, c.continuum.point_substeps, 1.0));
   for (FitTarget &t : case_targets(c))
@@ -106,6 +113,35 @@ CaseDescription calibrate_for_pair(const CaseDescription &c, const Response *dem
   } catch (const CalibrationError &e) {
     throw CaseError(c.file, e.parameter, e.what());
   }
+}
+
+std::vector<compare::CalibrationCurve> calibration_curves(const CaseDescription &c, const CaseDescription &calibrated,
+                                                         const Response *dem, const fs::path &dir)
+{
+  std::vector<compare::CalibrationCurve> out;
+  auto row = [](std::string curve, std::string role, const std::vector<ResidualSummary> &rows) {
+    compare::CalibrationCurve r{std::move(curve), std::move(role)};
+    for (const ResidualSummary &q : rows)
+      (q.quantity == "q" ? r.rms_q : q.quantity == "p" ? r.rms_p : r.rms_eps_v) = q.rms;
+    return r;
+  };
+  const fs::path fit = dir / "calibration" / "fit.json";
+  if (fs::is_regular_file(fit)) {
+    const nlohmann::json j = nlohmann::json::parse(read_parameter_file(fit.string(), "fit report (fit.json)"));
+    for (const auto &t : j.at("targets")) {
+      std::vector<ResidualSummary> rows;
+      for (const auto &[quantity, r] : t.at("residuals").items())
+        rows.push_back({quantity, r.at("fitted").get<bool>(), r.at("rms").get<double>()});
+      out.push_back(row(t.at("file").get<std::string>(), "calibrated on", rows));
+    }
+  }
+  if (dem && c.calibration.pair_dem == "held out") {
+    const FitTarget target = make_target((dir / results_file("dem")).string(), *dem, c.program,
+                                         -c.specimen.isotropic_pressure, c.continuum.point_substeps, 1.0);
+    const Response predicted = simulate(target, continuum_material(calibrated));
+    out.push_back(row(target.name, "predicted", summarize_residuals(target, predicted, fitted_quantities(c.calibration))));
+  }
+  return out;
 }
 
 std::optional<CaseDescription> calibrated_case_in(const CaseDescription &c, const fs::path &dir)

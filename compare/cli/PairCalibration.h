@@ -12,7 +12,11 @@
 // the calibrated section go to <dir>/calibration/. The continuum engines run the case
 // with that section appended to its text (later entries override earlier ones), which is
 // the text their results store in /meta/case_text - so a results file says itself which
-// continuum made it, and `geocomp calibrate` can replay it.
+// continuum made it, and `geocomp calibrate` can replay it. With calibration/pair dem = held
+// out the DEM run is left out of the fit: the continuum predicts the pair's program from the
+// targets alone (a hold-out test), and the report says which curves were calibrated on and
+// which was predicted.
+#include "compare/Report.h"
 #include "compare/calibrate/Calibration.h"
 #include "compare/case/CaseDescription.h"
 
@@ -50,6 +54,12 @@ CaseDescription with_calibrated_continuum(const CaseDescription &c, const std::s
 /// the case the continuum engines run. CaseError for a parameter the curves cannot identify.
 CaseDescription calibrate_for_pair(const CaseDescription &c, const Response *dem, const std::filesystem::path &dir,
                                    MPI_Comm comm);
+
+/// The report's curves of a calibrated pair: those of <dir>/calibration/fit.json "calibrated on",
+/// and with calibration/pair dem = held out the DEM run `dem` "predicted" by the material point
+/// with the `calibrated` case's section (its program's main path).
+std::vector<compare::CalibrationCurve> calibration_curves(const CaseDescription &c, const CaseDescription &calibrated,
+                                                         const Response *dem, const std::filesystem::path &dir);
 
 /// The calibrated case of an earlier calibrated pair in `dir` (its section read back from
 /// <dir>/calibration), none when the case is not calibrated or the section is missing.

@@ -95,6 +95,15 @@ class ACalibratedPair(unittest.TestCase):
         index = (self.out / "report" / "index.html").read_text()
         self.assertIn("the continuum section calibrated to 3 results file(s) of calibration/targets", index)
 
+    def test_the_report_lists_the_curves_calibrated_on_with_their_fit_residuals(self):
+        import json
+        curves = json.loads((self.out / "report" / "metrics.json").read_text())["calibration_curves"]
+        self.assertEqual([c["curve"] for c in curves], self.targets)
+        for c in curves:
+            self.assertEqual(c["role"], "calibrated on")
+            for q in ("rms_q", "rms_p", "rms_eps_v"):
+                self.assertLess(c[q], 1e-6, f"{c['curve']} {q}")
+
     def test_a_second_pair_refits_to_the_same_bits_and_reuses_the_results(self):
         self.assertEqual(self.second.returncode, 0, self.second.stderr)
         self.assertIn("material-point: up-to-date results reused", self.second.stdout)
