@@ -8,6 +8,7 @@
 #include "dem/program/SpecimenExchange.h"
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 namespace geocomp::cli {
@@ -77,6 +78,8 @@ int export_liggghts(const std::vector<std::string> &args)
     d_mean += 2.0 * r / double(p.size());
   in.skin = c.dem.skin * d_mean;
   const dem::LiggghtsDeckSummary s = dem::write_liggghts_case(out, in);
+  std::ofstream(out / kExportCaseFile) << fs::absolute(c.file).string() << "\n";
+  std::ofstream(out / kExportParametersFile) << parameters_text(c);
   for (const std::string &note : s.notes)
     std::cerr << "export liggghts: note: " << note << "\n";
   std::cout << "export liggghts: " << c.file << " (" << p.size() << " spheres, dt = " << s.time_step << " s, "

@@ -7,6 +7,11 @@
 
 namespace geocomp::cli {
 
+/// Files of an exported folder that `geocomp import liggghts` reads: the case's path, and
+/// its parameters as parsed (parameters_text), to refuse a case changed since the export.
+inline constexpr const char *kExportCaseFile = "geocomp-case";
+inline constexpr const char *kExportParametersFile = "geocomp-parameters";
+
 /// The help paragraph of the form, for `geocomp export --help`.
 std::string liggghts_export_usage();
 

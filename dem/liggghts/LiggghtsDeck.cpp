@@ -88,7 +88,7 @@ std::string geometry_section(const Packing &p, const LiggghtsContact &law)
 {
   std::ostringstream o;
   o << "# ---- the box: wall positions (mesh reference points), edges, strains, wall stresses\n"
-       "variable dt equal dt\nvariable t equal step*dt\nvariable nowstep equal step\n"
+       "variable dt equal dt\nvariable t equal (step-1)*dt\nvariable nowstep equal step\n"
        "variable zero equal 0.0\ncompute rad all property/atom radius\n";
   for (int a = 0; a < 3; ++a) {
     const char x = kAxis[a];
@@ -101,6 +101,13 @@ std::string geometry_section(const Packing &p, const LiggghtsContact &law)
       << "variable A" << x << " equal v_L" << b << "*v_L" << c << "\n"
       << "variable s" << x << " equal -(f_w_" << x << "hi[" << 1 + a << "]-f_w_" << x << "lo[" << 1 + a
       << "])/(2*v_A" << x << ")\n";
+    // The servo's stress: LIGGGHTS' setup of each `run` adds the wall forces once more
+    // (f_w doubles), so from that setup to the end of the first step the servo reads the
+    // normal forces kept at the end of the previous run (keep_forces()).
+    for (const char *side : {"lo", "hi"})
+      o << "variable uF_" << x << side << " equal (step<=v_nrun+1)*v_kF_" << x << side << "+(step>v_nrun+1)*f_w_" << x
+        << side << "[" << 1 + a << "]\n";
+    o << "variable us" << x << " equal -(v_uF_" << x << "hi-v_uF_" << x << "lo)/(2*v_A" << x << ")\n";
     for (int side = 0; side < 2; ++side) { // sum of the normal stiffness of the wall's touching spheres
       const std::string w = std::string(1, x) + (side ? "hi" : "lo");
       const std::string delta = side ? "(" + std::string(1, x) + "+c_rad-v_" + w + ")"
@@ -137,12 +144,38 @@ std::string strain_expression(const Stage &s, int a, const std::string &T)
   return "((1+v_e0x)*(1+v_e0y)*(1+v_e0z)/((1+" + ex + ")*(1+" + ey + "))-1)"; // S0 eq. (3): L_z = V0/(L_x L_y)
 }
 
+/// After each `run`: the step and the walls' normal forces, for the next run's first step.
+std::string keep_forces()
+{
+  std::string o = "variable nrun equal ${nowstep}\n";
+  for (int w = 0; w < 6; ++w)
+    o += std::string("variable kF_") + kWall[w] + " equal ${F" + kAxis[w / 2] + "_" + kWall[w] + "}\n";
+  return o;
+}
+
+/// The column names of samples.txt and the print text of one row.
+std::pair<std::string, std::string> sample_columns()
+{
+  std::string cols = "t stage", vals = "${t} ${stage}";
+  for (const char *v : {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi", "Lx", "Ly", "Lz", "sx", "sy", "sz", "ke", "erot"}) {
+    cols += std::string(" ") + v;
+    vals += std::string(" ${") + v + "}";
+  }
+  for (int w = 0; w < 6; ++w)
+    for (int a = 0; a < 3; ++a) {
+      const std::string name = std::string("F") + kAxis[a] + "_" + kWall[w];
+      cols += " " + name;
+      vals += " ${" + name + "}";
+    }
+  return {cols, vals};
+}
+
 /// One stress axis' servo (AxisServo::velocity) as variables; defines v<a> for the stage.
 std::string servo_variables(char x, double goal, const LiggghtsDeckInput &in)
 {
   const std::string X(1, x), g = num(goal), gp = num(in.servo.proportional_gain), gi = num(in.servo.integral_gain);
   std::ostringstream o;
-  o << "variable err" << X << " equal " << g << "-v_s" << X << "\n"
+  o << "variable err" << X << " equal " << g << "-v_us" << X << "\n"
     << "variable K" << X << " equal 0.5*(c_K_" << X << "lo+c_K_" << X << "hi)*(1+" << num(in.contact.dashpot_time)
     << "/v_dt)\n"
     << "variable G" << X << " equal v_A" << X << "/(v_K" << X << "*v_dt+(v_K" << X << "<=0))\n"
@@ -165,13 +198,14 @@ std::string stage_section(const Stage &s, int index, long long steps_per_sample,
   const std::string where = "program/stage " + std::to_string(index);
   std::ostringstream o;
   o << "# ---- stage " << index << ": " << s.name << "\n"
+    << "variable stage equal " << index - 1 << "\n"
     << "variable n0 equal ${nowstep}\nvariable t0 equal ${t}\n"
     << "variable e0x equal ${ex}\nvariable e0y equal ${ey}\nvariable e0z equal ${ez}\n";
   std::string kin = "0";
   for (int a = 0; a < 3; ++a)
     if (s.kinematic(a)) {
       const std::string X(1, kAxis[a]);
-      o << "variable v" << X << " equal 0.5*(v_L0" << X << "*(1+" << strain_expression(s, a, "step*v_dt")
+      o << "variable v" << X << " equal 0.5*(v_L0" << X << "*(1+" << strain_expression(s, a, "(step-1)*v_dt")
         << ")-v_L" << X << ")/v_dt\n";
       kin = "0.5*(" + kin + "+abs(v_v" + X + ")+abs(" + kin + "-abs(v_v" + X + ")))"; // max
     }
@@ -190,10 +224,16 @@ std::string stage_section(const Stage &s, int index, long long steps_per_sample,
     << "variable chunk" << index << " loop " << chunks << "\n"
     << "label loop" << index << "\n"
     << "run " << steps_per_sample << "\n"
+    << "print \"" << sample_columns().second << "\" append samples.txt screen no\n"
+    << keep_forces()
     << "if \"${stop" << index << "} > 0\" then \"jump SELF end" << index << "\"\n"
     << "next chunk" << index << "\njump SELF loop" << index << "\n"
     << "print \"stage " << index << " reached its max duration (" << num(s.max_duration) << " s)\"\n"
-    << "label end" << index << "\n";
+    << "print \"" << index - 1 << " max-duration\" append stages.txt screen no\n"
+    << "jump SELF done" << index << "\n"
+    << "label end" << index << "\n"
+    << "print \"" << index - 1 << " stop\" append stages.txt screen no\n"
+    << "label done" << index << "\n";
   for (int a = 0; a < 3; ++a)
     if (!s.kinematic(a))
       o << "unfix I" << kAxis[a] << "\n";
@@ -239,22 +279,23 @@ std::string motion_and_output_section(long long steps_per_sample)
        "fix m_zlo all move/mesh mesh w_zlo linear/variable v_zero v_zero v_mvz\n"
        "fix m_zhi all move/mesh mesh w_zhi linear/variable v_zero v_zero v_vz\n"
        "compute erot all erotate/sphere\nvariable ke equal ke\nvariable erot equal c_erot\n";
-  std::string cols = "t", vals = "${t}";
-  for (const char *v : {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi", "Lx", "Ly", "Lz", "sx", "sy", "sz", "ke", "erot"}) {
-    cols += std::string(" ") + v;
-    vals += std::string(" ${") + v + "}";
-  }
   for (int w = 0; w < 6; ++w)
-    for (int a = 0; a < 3; ++a) {
-      const std::string name = std::string("F") + kAxis[a] + "_" + kWall[w];
-      o << "variable " << name << " equal f_w_" << kWall[w] << "[" << a + 1 << "]\n";
-      cols += " " + name;
-      vals += " ${" + name + "}";
-    }
-  o << "fix samples all print " << steps_per_sample << " \"" << vals << "\" file samples.txt screen no title \"# "
-    << cols << "\"\n"
-    << "thermo_style custom step v_t v_Lx v_Ly v_Lz v_sx v_sy v_sz ke\nthermo " << steps_per_sample
-    << "\nthermo_modify norm no lost error\n";
+    for (int a = 0; a < 3; ++a)
+      o << "variable F" << kAxis[a] << "_" << kWall[w] << " equal f_w_" << kWall[w] << "[" << a + 1 << "]\n";
+  const auto [cols, vals] = sample_columns();
+  // One row at the start of the program and one after each chunk (print, not fix print:
+  // the first row is the state the program starts from, and each row carries its stage).
+  o << "thermo_style custom step v_t v_Lx v_Ly v_Lz v_sx v_sy v_sz ke c_erot\nthermo " << steps_per_sample
+    << "\nthermo_modify norm no lost error\n"
+    << "# One step at rest before the program: LIGGGHTS computes no wall force in a run's setup,\n"
+       "# so the program starts (t = 0, the first sample) when the walls' forces exist.\n"
+    << "variable stage equal 0\nvariable nrun equal 0\n";
+  for (int w = 0; w < 6; ++w)
+    o << "variable kF_" << kWall[w] << " equal 0.0\n";
+  o << "run 1\n" << keep_forces()
+    << "print \"# " << cols << "\" file samples.txt screen no\n"
+    << "print \"" << vals << "\" append samples.txt screen no\n"
+    << "print \"# stage end\" file stages.txt screen no\n";
   return o.str();
 }
 
