@@ -7,6 +7,7 @@
 // A small generated specimen (250 spheres) keeps each run to a few seconds.
 #include "common/ResponseFile.h"
 #include "common/Subprocess.h"
+#include "dem/liggghts/LiggghtsContact.h"
 #include "dem/program/DemEngine.h"
 #include "dem/specimen/Packing.h"
 #include "tests/common/CommandRun.h"
@@ -292,4 +293,73 @@ TEST_F(LiggghtsExport, AStopConditionTheDeckCannotTestIsRefusedWithExitTwo)
   EXPECT_NE(r.err.find("program/stage 1/stop when"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
   EXPECT_FALSE(fs::exists(scratch() / "results" / "dem-specimen.bin")) << "refused before the specimen is prepared";
+}
+
+TEST_F(LiggghtsExport, TheHertzMindlinLawRunsInLiggghtsWithTheLateralStressHeld)
+{
+  fs::create_directories(scratch());
+  const fs::path c = write_case("hertz", kTriaxial, "  set model = hertz-mindlin\n  set youngs modulus = 5e7\n");
+  std::string text;
+  {
+    std::ifstream in(c);
+    std::stringstream s;
+    s << in.rdbuf();
+    text = s.str();
+  }
+  text.replace(text.find("  set normal stiffness = 2e5\n"), 29, ""); // a linear-only entry
+  std::ofstream(c) << text;
+  const fs::path out = scratch() / "hertz-liggghts";
+  const auto e = export_case(c, out);
+  ASSERT_EQ(e.code, 0) << e.err;
+  std::ifstream deck(out / "in.geocomp");
+  std::stringstream d;
+  d << deck.rdbuf();
+  EXPECT_NE(d.str().find("pair_style gran model hertz tangential history limitForce on"), std::string::npos);
+  const auto run = geocomp::test::run_program({"liggghts", "-in", "in.geocomp"}, out, 300.0);
+  ASSERT_EQ(run.code, 0);
+  const Samples s = read_samples(out / "samples.txt");
+  ASSERT_GE(s.rows.size(), 10u);
+  for (std::size_t k = 0; k < s.rows.size(); ++k)
+    EXPECT_NEAR(s.at(k, "sx"), -1e5, 1e3) << "sample " << k;
+  EXPECT_LE(s.at(s.rows.size() - 1, "Lz") / s.at(0, "Lz") - 1.0, -0.02);
+}
+
+// The mapping itself, without LIGGGHTS.
+TEST(LiggghtsContactMapping, TheLinearLawsConstantsAreGeocompsOwnForTheSphereAndWallPairs)
+{
+  geocomp::dem::ContactParameters c; // S0's k_n from E, nu, V_c; c_n from c_r = 0.5
+  c.particle_friction = 0.4;
+  c.wall_friction = 0.1;
+  geocomp::dem::DemParameters d;
+  geocomp::dem::Packing p;
+  p.density = 2650.0;
+  p.radius = {0.01, 0.01};
+  p.position = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()};
+  const auto law = geocomp::dem::map_contact_to_liggghts({"case.prm", &c, &d, &p});
+  EXPECT_EQ(law.model, "hooke/stiffness");
+  const double m = 2650.0 * 4.0 / 3.0 * M_PI * 1e-6, e_star = c.youngs_modulus / (2.0 * (1.0 - 0.0625));
+  const auto k_n = [&](double m_eff, double r_eff) { // S0's k_n, written out here
+    return 16.0 / 15.0 * std::sqrt(r_eff) * e_star * std::pow(15.0 * m_eff / (16.0 * std::sqrt(r_eff) * e_star), 0.2);
+  };
+  const auto values = [&](const std::string &prefix) {
+    for (const std::string &line : law.properties)
+      if (line.rfind(prefix, 0) == 0) {
+        std::istringstream in(line.substr(line.find("peratomtypepair 2 ") + 18));
+        std::vector<double> v(4);
+        in >> v[0] >> v[1] >> v[2] >> v[3];
+        return v;
+      }
+    return std::vector<double>{};
+  };
+  const std::vector<double> kn = values("fix m_kn "), kt = values("fix m_kt "), mu = values("fix m_coefficientFriction ");
+  ASSERT_EQ(kn.size(), 4u);
+  EXPECT_NEAR(kn[0], k_n(m / 2.0, 0.005), 1e-9 * kn[0]); // sphere-sphere: m* = m/2, R* = R/2
+  EXPECT_NEAR(kn[1], k_n(m, 0.01), 1e-9 * kn[1]);        // sphere-wall: m* = m, R* = R
+  EXPECT_NEAR(kt[0], 2.0 / 7.0 * kn[0], 1e-9 * kn[0]);
+  const std::vector<double> cn = values("fix m_gamman_abs "), ct = values("fix m_gammat_abs ");
+  const double zeta = -std::log(0.5) / std::sqrt(M_PI * M_PI + std::log(0.5) * std::log(0.5));
+  EXPECT_NEAR(cn[0], 2.0 * zeta * std::sqrt(m / 2.0 * kn[0]), 1e-9 * cn[0]);
+  EXPECT_NEAR(ct[0], 2.0 / 7.0 * cn[0], 1e-9 * cn[0]); // S0 eq. (2): c_t in the proportion of the springs
+  EXPECT_EQ(mu, (std::vector<double>{0.4, 0.1, 0.1, 0.1}));
+  EXPECT_NEAR(law.dashpot_time, cn[1] / kn[1], 1e-3 * cn[1] / kn[1]); // the mean sphere against a wall
 }
