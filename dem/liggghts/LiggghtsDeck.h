@@ -23,8 +23,13 @@
 // (a per-atom overlap test) times $(1 + c_n/(k_n\Delta t))$, the proportional part
 // $g_P G e$, and the integral part kept as the running sum of its increments in a `fix
 // ave/time ... ave running` (mean x count), with geocomp's anti-windup, clamp and reset at
-// each stage. Outputs: `samples.txt`, every sample interval (time, wall positions, edges,
-// the six walls' forces, the wall stresses tension positive, kinetic energies).
+// each stage. LIGGGHTS computes no wall force in a run's setup and adds it twice in later
+// setups: the deck takes one step at rest before the program (t = 0 after it), and from a
+// run's setup to the end of its first step the servo reads the wall forces kept at the end
+// of the previous run. Outputs: `samples.txt`, a row at t = 0 and one per sample interval
+// (time, stage, wall positions, edges, the wall stresses tension positive, kinetic
+// energies, the six walls' forces), and `stages.txt`, how each stage ended
+// (LiggghtsSamples.h reads both).
 // Unloading branches (restarts from LIGGGHTS restart files) are not written yet: the deck
 // plays the main path and says so.
 #pragma once
