@@ -50,6 +50,7 @@ Command calibrate_command();
 Command sweep_command();
 Command pack_command();
 Command export_command();
+Command import_command();
 Command rate_sweep_command();
 Command crush_command();
 Command shear_box_command();

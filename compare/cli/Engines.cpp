@@ -50,6 +50,8 @@ std::string read_text(const fs::path &file)
   return s.str();
 }
 
+} // namespace
+
 /// The case's consolidated specimen in its engine: from `<dir>/dem-specimen.bin` when its
 /// record (`dem-specimen.key`: the build, the seed and every DEM entry the specimen depends
 /// on, dem/case/SpecimenRecord.h) is the case's, otherwise prepared now
@@ -85,7 +87,6 @@ std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const 
   write_atomically(key_file, [&key](const fs::path &tmp) { std::ofstream(tmp) << key; });
   return e;
 }
-} // namespace
 
 const std::vector<std::string> &engine_names()
 {

@@ -6,6 +6,7 @@
 #include "continuum/driver/Materials.h"
 #include "continuum/driver/MaterialPointEngine.h"
 #include "continuum/fe/CubeEngine.h"
+#include "dem/program/DemEngine.h"
 
 #include <mpi.h>
 
@@ -23,6 +24,12 @@ const std::vector<std::string> &engine_names();
 /// which it calls first. `output_dir` receives the engine's field output.
 std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDescription &c,
                                            const std::string &output_dir, MPI_Comm communicator = MPI_COMM_WORLD);
+
+/// The DEM engine of a case in its state at the start of the program: the consolidated
+/// specimen cached in `dir` (`dem-specimen.bin`, as `geocomp dem` caches it) when its record
+/// is the case's, otherwise prepared now and cached there. `geocomp export liggghts` takes
+/// its specimen from here, so the export is the specimen `geocomp dem` starts from.
+std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const std::filesystem::path &dir);
 
 /// The continuum material of a case (Mohr-Coulomb tables in radians; throws CaseError).
 continuum::MaterialParameters continuum_material(const CaseDescription &c);

@@ -1,6 +1,8 @@
 // `geocomp export`: a stored specimen to another tool's packing file (xyzr text or a
-// LAMMPS/LIGGGHTS data file), or the list of a store's specimens.
+// LAMMPS/LIGGGHTS data file), the list of a store's specimens, or a whole case as a
+// LIGGGHTS run (`export liggghts <case> --output DIR`, LiggghtsExport.cpp).
 #include "Commands.h"
+#include "LiggghtsExport.h"
 
 #include "common/case/CaseParameters.h"
 #include "dem/program/SpecimenExchange.h"
@@ -32,18 +34,24 @@ Command export_command()
 {
   Command c;
   c.name = "export";
-  c.summary = "write a stored specimen as an xyzr text or LAMMPS/LIGGGHTS data file, or list a store";
+  c.summary = "write a stored specimen as an xyzr text or LAMMPS/LIGGGHTS data file, list a store, "
+              "or write a case as a LIGGGHTS run";
   c.usage =
     "usage: geocomp export <store.h5>                 list the specimens of a core store\n"
-    "       geocomp export <store.h5> <name> <file>   write specimen <name> to <file>\n\n"
+    "       geocomp export <store.h5> <name> <file>   write specimen <name> to <file>\n"
+    "       geocomp export liggghts <case> --output DIR   the case as a LIGGGHTS 3.8 run\n\n"
     "The format follows the extension: '.data' writes a LAMMPS/LIGGGHTS data file (atom_style\n"
     "granular: id type diameter density x y z), anything else 'x y z r' per line with the box\n"
     "in a '#' header line (../shared/bench/data/*.xyzr). The box is the box of the specimen's six\n"
     "walls; positions and radii carry 17 significant digits. Either file is read back by a case\n"
     "with `specimen/source = text`. Velocities and contact histories are not exported: use the\n"
     "store itself for an exact restart. The file is written under a temporary name and renamed.\n\n"
-    "Exit codes: 0 done, 2 bad input (store, name, output file), 1 the write failed.\n";
+    + liggghts_export_usage() +
+    "\nExit codes: 0 done, 2 bad input (store, name, output file, a case entry LIGGGHTS cannot\n"
+    "play), 1 the write failed.\n";
   c.run = [](const std::vector<std::string> &args) {
+    if (!args.empty() && args[0] == "liggghts")
+      return export_liggghts(std::vector<std::string>(args.begin() + 1, args.end()));
     const Arguments a = Arguments::parse(args, {}, {});
     if (a.positional.size() != 1 && a.positional.size() != 3)
       throw UsageError("expected a store, or a store, a specimen name and an output file");
