@@ -3,7 +3,8 @@
 //
 // Why it exists: S4 (Yan & Ji 2009) shows its direct shear results as two figures. Fig. 5:
 // the vertical displacement of the lid and the shear stress tau_x = F_S / (B (L - U))
-// (S4 eq. 23) against the shear displacement U, one curve per normal stress. Fig. 7: the
+// (S4 eq. 23) against the shear displacement U, one curve per normal stress (and here a third
+// panel: the first fifth of the shear, lid in um, where the contraction shows). Fig. 7: the
 // effective friction mu_b = F_S / F_N (S4 eq. 24) (a) against the normal stress and (b)
 // against the contact friction. This writes them for the runs of one results folder
 // (ShearBoxRuns.h) as gnuplot plots in a self-contained report folder:

@@ -70,7 +70,12 @@ Command shear_box_command()
     const Arguments a = Arguments::parse(args, {"output", "report"}, {"check", "print-parameters"});
     if (a.has("report")) {
       if (!a.positional.empty()) throw UsageError("--report DIR takes no case file");
-      return static_cast<int>(refresh_report(a.get("report")) ? ok : run_failure);
+      const std::string dir = a.get("report");
+      if (!std::filesystem::is_directory(dir)) {
+        log::error("--report: '" + dir + "' is not a folder (expected the --output folder of shear-box runs)");
+        return static_cast<int>(bad_input);
+      }
+      return static_cast<int>(refresh_report(dir) ? ok : run_failure);
     }
     if (a.has("print-parameters")) {
       ParameterHandler prm;
