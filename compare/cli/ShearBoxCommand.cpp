@@ -11,6 +11,7 @@
 #include "OutputFolderLock.h"
 
 #include "common/AtomicFile.h"
+#include "compare/ShearBoxReport.h"
 #include "dem/program/ShearBoxCase.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -26,19 +27,56 @@ namespace geocomp::cli {
 
 using namespace dealii;
 
+namespace {
+
+// <dir>/report from every run in `dir` (S4's Fig. 5 and 7); false with a message on failure.
+bool refresh_report(const std::string& dir)
+{
+  try {
+    const auto runs = compare::read_shear_box_runs(dir);
+    if (runs.empty()) {
+      log::error("shear-box report: no <case>.tsv with its <case>-summary.txt in " + dir);
+      return false;
+    }
+    const compare::ShearBoxReportOutcome o =
+      compare::write_shear_box_report(runs, std::filesystem::path(dir) / "report");
+    if (!o.message.empty()) log::warning("shear-box report: " + o.message);
+    std::cout << "wrote " << o.dir.string() << "/index.html (" << runs.size() << " runs"
+              << (o.plots_made ? ", fig5.png, fig7.png" : "") << ")\n";
+    return true;
+  } catch (const std::exception& e) {
+    log::error(std::string("shear-box report: ") + e.what());
+    return false;
+  }
+}
+
+}  // namespace
+
 Command shear_box_command()
 {
   Command c;
   c.name = "shear-box";
   c.summary = "S4 direct shear box of clumped rubble: mu_b, contraction and dilation (S4 eqs. (22)-(24))";
-  c.usage = "usage: geocomp shear-box <case.prm> [--output DIR] [--check] [--print-parameters]\n\n"
+  c.usage = "usage: geocomp shear-box <case.prm> [--output DIR] [--check] [--print-parameters]\n"
+            "       geocomp shear-box --report DIR\n\n"
             "Builds S4's split box (bounded walls), fills it with clumps from S4's four templates,\n"
             "grows them to full size, loads the lid to the normal stress (servo) and shears the lower\n"
             "box. Writes <DIR>/<case>.tsv (U, lid rise, F_N, F_S, area, sigma_z, tau_x, mu_b, I;\n"
-            "compression positive) and <DIR>/<case>-summary.txt (docs/s4-direct-shear.md).\n"
+            "compression positive) and <DIR>/<case>-summary.txt (docs/s4-direct-shear.md), then\n"
+            "rewrites <DIR>/report/ (S4 Fig. 5 and Fig. 7, gnuplot) from every run in DIR;\n"
+            "--report DIR only rewrites that report.\n"
             "--check only validates the case. Exit 0 ok, 1 run failure, 2 bad input.\n";
   c.run = [](const std::vector<std::string>& args) {
-    const Arguments a = Arguments::parse(args, {"output"}, {"check", "print-parameters"});
+    const Arguments a = Arguments::parse(args, {"output", "report"}, {"check", "print-parameters"});
+    if (a.has("report")) {
+      if (!a.positional.empty()) throw UsageError("--report DIR takes no case file");
+      const std::string dir = a.get("report");
+      if (!std::filesystem::is_directory(dir)) {
+        log::error("--report: '" + dir + "' is not a folder (expected the --output folder of shear-box runs)");
+        return static_cast<int>(bad_input);
+      }
+      return static_cast<int>(refresh_report(dir) ? ok : run_failure);
+    }
     if (a.has("print-parameters")) {
       ParameterHandler prm;
       dem::declare_shear_box_parameters(prm);
@@ -98,6 +136,9 @@ Command shear_box_command()
       sum << "case\t" << sc.file << "\n"
           << "normal_stress_kPa\t" << sc.p.normal_stress / 1e3 << "\n"
           << "contact_friction\t" << sc.p.mu_contact << "\n"
+          << "seed\t" << sc.p.seed << "\n"
+          << "box_length_m\t" << sc.p.length << "\n"
+          << "shear_speed_m_s\t" << sc.p.shear_speed << "\n"
           << "clumps\t" << s.n_clumps << "\nspheres\t" << s.n_spheres << "\n"
           << "gap_mm\t" << s.gap * 1e3 << "\n"
           << "time_step_s\t" << s.time_step << "\n"
@@ -126,6 +167,7 @@ Command shear_box_command()
           << "prepare_seconds\t" << s.prepare_seconds << "\nshear_seconds\t" << s.shear_seconds << "\n";
       write_atomically(base + "-summary.txt", [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << sum.str(); });
       std::cout << sum.str() << "wrote " << base << ".tsv, " << base << "-summary.txt\n";
+      refresh_report(dir);  // a report that cannot be drawn does not fail the run (its message is logged)
     } catch (const std::exception& e) {
       log::error(std::string("shear box failed: ") + e.what());
       return static_cast<int>(run_failure);

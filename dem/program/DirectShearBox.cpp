@@ -271,7 +271,7 @@ void DirectShearBox::servo_lid()
 
 // The loaded lid during rest and shear: a rigid plate that moves vertically under the
 // particles' force and the applied load (a dead load, as in S4's test),
-//   m_lid dv/dt = F_lid - P - W_lid,   P = sigma_n L B,
+//   m_lid dv/dt = F_lid - P - W_lid,   P = sigma_n L B (the P of S4 eq. (22)),
 // m_lid an inertia (W_lid, the lid's own weight, 0 by default). It follows
 // a dilating specimen with the error m_lid a, negligible here, where the velocity servo of
 // the loading lags by (dilation rate) K dt / servo_factor (30-40 % of P at 100 kPa).
@@ -283,8 +283,9 @@ void DirectShearBox::drive_lid()
   sys_->set_wall_velocity(lid(), Vec3(0.0, 0.0, v_lid));
 }
 
-// The free upper box: one rigid body (sides, rim, skirts) moving on z only,
-//   m_B dv/dt = F_{B,z} - W_B + R,
+// The free upper box: one rigid body (sides, rim, skirts) moving on z only (S4 section 3.2:
+// "fixed horizontally, free vertically"; its x and y velocities stay 0),
+//   m_B dv/dt = F_{B,z} - W_B + R,          the box's weight W_B of S4 eq. (22),
 // F_{B,z} the particles' force on its plates, W_B its weight (S4 eq. 22), R the reaction of
 // the seat (R >= 0, the box cannot sink below the set gap) or of the top stop (R <= 0, rise
 // <= box_max_rise). Semi-implicit Euler with the step's forces, as the lid; a stop is a
@@ -308,7 +309,7 @@ void DirectShearBox::drive_box()
   if (z + dt_ * v < 0.0) v = -z / dt_;                                      // seat
   else if (z + dt_ * v > p_.box_max_rise) v = (p_.box_max_rise - z) / dt_;  // top stop
   box_stop_ = p_.box_mass * (v - v_free) / dt_;
-  for (std::size_t j = 1; j < upper_.size(); ++j) sys_->set_wall_velocity(upper_[j], Vec3(0.0, 0.0, v));
+  for (std::size_t j = 1; j < upper_.size(); ++j) sys_->set_wall_velocity(upper_[j], Vec3(0.0, 0.0, v));  // z only
   box_force_sum_ += f;
   box_stop_sum_ += box_stop_;
   ++box_steps_;

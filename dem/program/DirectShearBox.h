@@ -14,7 +14,9 @@
 // Upper box (S4: fixed horizontally, free vertically): its four sides, its rim and three
 // skirts form one rigid body moving only along z, released at the start of the rest
 // under sigma_n (the gap screws backed off), with
-//   $m_B \ddot z_B = F_{B,z} - W_B$,  $F_{B,z} = \sum_{box\ plates} F_z$ (the particles' force),
+//   $m_B \ddot z_B = F_{B,z} - W_B + R$,  $\dot x_B = \dot y_B = 0$,
+//   $F_{B,z} = \sum_{box\ plates} F_z$ (the particles' force), W_B the box weight of S4 eq. (22),
+//   R the reaction of the seat (R >= 0) or of the top stop (R <= 0),
 // integrated each DEM step like the loaded lid (drive_box). The box rests on spacers at the
 // set gap (it cannot sink below its seat: a lower stop) and a top stop limits its rise to
 // box_max_rise (stop reactions recorded). Off the stops the box is carried by the specimen:

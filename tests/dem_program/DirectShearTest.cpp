@@ -2,44 +2,22 @@
 // bookkeeping against the wall forces, the corrected area, the lid servo, a short shear
 // run that first contracts and then dilates, and the free upper box carried by the
 // specimen (its side friction bounded by its weight, F_N = P + W_P + W_B).
+#include "SmallShearBox.h"
 #include "dem/program/DirectShearBox.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <string>
 
 using namespace geocomp::dem;
 
 namespace {
 
-// A 3 x 3 cm box with grains of 1/8 of S4's mass (half the size), so that ~200 clumps
-// fill it; modulus scaled by 1/100 (S4's rubble modulus is 58.54 GPa).
-DirectShearParameters small_box()
-{
-  DirectShearParameters p;
-  p.length = p.width = 0.03;
-  p.half_height = 0.009;
-  p.clumps.log_mass_mean -= std::log(8.0);
-  p.clumps.mass_min /= 8.0;
-  p.clumps.mass_max /= 8.0;
-  p.modulus_scale = 0.01;
-  p.normal_stress = 100e3;
-  p.shear_speed = 0.05;
-  p.max_shear = 0.003;
-  p.output_points = 30;
-  p.growth_stages = 8;
-  p.settle_steps = 600;
-  p.load_max_time = 0.05;
-  p.seed = 7;
-  // Free upper box (S4) of 0.2 kg, W_B = 2 N (P = 90 N), top stop 6 mm above its seat.
-  p.upper_box_free = true;
-  p.box_mass = 0.2;
-  p.box_weight = 2.0;
-  p.box_max_rise = 0.006;
-  return p;
-}
+DirectShearParameters small_box() { return geocomp::dem::test::small_shear_box(7); }
 
 struct Prepared
 {
@@ -164,31 +142,61 @@ TEST(DirectShear, FreeUpperBoxIsCarriedBySpecimenAndBoundsTheSideFriction)
   EXPECT_NEAR(load / fn, 1.0, 0.05);
 }
 
-// S4's normal-stress trends (section 3.3, Fig. 5 and 7a) on one dense specimen (seated
-// without friction, S4's vibration compaction, then loaded): sheared at 100 and 300 kPa,
-// it first contracts more and then dilates less at 300 kPa, and its effective friction
-// mu_b (S4 eq. 24) peaks lower there.
-TEST(DirectShear, LowNormalStressDilatesMoreContractsLessAndHasHigherMuB)
+// One seed of the small box at a normal stress and contact friction, prepared and sheared.
+ShearSummary shear_run(std::uint64_t seed, double normal_stress, double mu_contact)
 {
-  auto run = [](double normal_stress) {
-    DirectShearParameters p = small_box();
-    p.normal_stress = normal_stress;
-    DirectShearBox box(p);
-    box.prepare();
-    return box.summary(box.shear());
-  };
-  const ShearSummary lo = run(100e3), hi = run(300e3);
-  // The same seated specimen for both loads, denser than a frictional growth (e ~ 1.0 in
-  // the S4 cases, a loose specimen that only contracts; S4: e = 0.46).
-  EXPECT_DOUBLE_EQ(lo.void_ratio_seated, hi.void_ratio_seated);
-  EXPECT_LT(lo.void_ratio_seated, 0.9);
-  // At rest under sigma_n before the shear.
-  EXPECT_LT(lo.rest_kinetic_ratio, 1e-4);
-  EXPECT_LT(hi.rest_kinetic_ratio, 1e-4);
-  EXPECT_GT(hi.max_contraction, lo.max_contraction);  // contraction grows with the load
-  EXPECT_GT(hi.final_dilation, 0.0);                   // net dilation at both loads
-  EXPECT_GT(lo.final_dilation, hi.final_dilation);     // more dilation at low load
-  EXPECT_GT(lo.peak_mu_b, hi.peak_mu_b);               // mu_b falls with normal stress
-  EXPECT_LT(hi.inertial_number, lo.inertial_number);
-  EXPECT_LT(lo.inertial_number, 1e-3);
+  DirectShearParameters p = geocomp::dem::test::small_shear_box(seed);
+  p.normal_stress = normal_stress;
+  p.mu_contact = mu_contact;
+  DirectShearBox box(p);
+  box.prepare();
+  return box.summary(box.shear());
+}
+
+// The seeds every trend is checked over (not one lucky seed): each trend must hold for each.
+constexpr std::uint64_t trend_seeds[] = {7, 8, 9};
+
+// S4's normal-stress trends (section 3.3, Fig. 5 and 7a) on dense specimens (seated
+// without friction, S4's vibration compaction, then loaded): the same specimen sheared at
+// 100 and 300 kPa first contracts more and then dilates less at 300 kPa, and its effective
+// friction mu_b (S4 eq. 24) peaks lower there. Checked for each of three seeds; the
+// margins (the difference that must stay positive) are printed.
+TEST(DirectShear, OverThreeSeedsLowNormalStressDilatesMoreContractsLessAndHasHigherMuB)
+{
+  for (std::uint64_t seed : trend_seeds) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const ShearSummary lo = shear_run(seed, 100e3, 0.7), hi = shear_run(seed, 300e3, 0.7);
+    std::printf("[S4 trends, seed %llu] contraction 300 - 100 kPa %+.4f mm, dilation 100 - 300 kPa %+.4f mm "
+                "(final %.4f / %.4f mm), peak mu_b 100 - 300 kPa %+.3f (%.3f / %.3f)\n",
+                (unsigned long long)seed, 1e3 * (hi.max_contraction - lo.max_contraction),
+                1e3 * (lo.final_dilation - hi.final_dilation), 1e3 * lo.final_dilation, 1e3 * hi.final_dilation,
+                lo.peak_mu_b - hi.peak_mu_b, lo.peak_mu_b, hi.peak_mu_b);
+    // The same seated specimen for both loads, denser than a frictional growth (e ~ 1.0).
+    EXPECT_DOUBLE_EQ(lo.void_ratio_seated, hi.void_ratio_seated);
+    EXPECT_LT(lo.void_ratio_seated, 0.9);
+    EXPECT_LT(lo.rest_kinetic_ratio, 1e-4);  // at rest under sigma_n before the shear
+    EXPECT_LT(hi.rest_kinetic_ratio, 1e-4);
+    EXPECT_GT(hi.max_contraction, lo.max_contraction);  // contraction grows with the load
+    EXPECT_GT(hi.final_dilation, 0.0);                   // net dilation at both loads
+    EXPECT_GT(lo.final_dilation, hi.final_dilation);     // more dilation at low load
+    EXPECT_GT(lo.peak_mu_b, hi.peak_mu_b);               // mu_b falls with normal stress
+    EXPECT_LT(hi.inertial_number, lo.inertial_number);
+    EXPECT_LT(lo.inertial_number, 1e-3);
+  }
+}
+
+// S4 Fig. 7(b): the effective friction rises with the contact friction. The same specimen
+// (the preparation is frictionless up to the seating, so it does not depend on the contact
+// friction) sheared at 100 kPa with contact friction 0.3 and 1.0 peaks higher at 1.0, for
+// each of three seeds; margins printed.
+TEST(DirectShear, OverThreeSeedsPeakMuBRisesWithTheContactFriction)
+{
+  for (std::uint64_t seed : trend_seeds) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const ShearSummary lo = shear_run(seed, 100e3, 0.3), hi = shear_run(seed, 100e3, 1.0);
+    std::printf("[S4 friction, seed %llu] peak mu_b at contact mu 1.0 - 0.3: %+.3f (%.3f / %.3f)\n",
+                (unsigned long long)seed, hi.peak_mu_b - lo.peak_mu_b, hi.peak_mu_b, lo.peak_mu_b);
+    EXPECT_DOUBLE_EQ(lo.void_ratio_seated, hi.void_ratio_seated);
+    EXPECT_GT(hi.peak_mu_b, lo.peak_mu_b);
+  }
 }
