@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libceres-dev nlohmann-json3-dev libcli11-dev libspdlog-dev
   gnuplot-nox clang libclang-rt-14-dev chromium
   python3-dev pybind11-dev python3-numpy python3-h5py python3-matplotlib
+  liggghts
 )
 missing=()
 for p in "${packages[@]}"; do
