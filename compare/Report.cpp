@@ -1,11 +1,11 @@
 #include "compare/Report.h"
 
+#include "common/AtomicFile.h"
 #include "common/Subprocess.h"
 #include "compare/GnuplotString.h"
 #include "compare/JsonString.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,7 +13,6 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace geocomp::compare {
 
@@ -474,16 +473,9 @@ std::string metrics_json(const ReportInput &in)
 
 ReportOutcome write_report(const ReportInput &in, const fs::path &dir, const ReportOptions &options)
 {
-  static std::atomic<int> counter{0};
-  const fs::path target = fs::absolute(dir);
-  fs::create_directories(target.parent_path());
-  const std::string stamp = std::to_string(::getpid()) + "." + std::to_string(counter++);
-  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp." + stamp);
   ReportOutcome out;
-  out.dir = target;
-  try {
-    fs::remove_all(tmp);
-    fs::create_directories(tmp);
+  out.dir = fs::absolute(dir);
+  replace_folder_atomically(dir, [&](const fs::path &tmp) {
     std::string script;
     const std::vector<std::string> pngs = write_plot_inputs(in, tmp, script);
     write_text(tmp / "report.gp", script);
@@ -509,20 +501,7 @@ ReportOutcome write_report(const ReportInput &in, const fs::path &dir, const Rep
     }
     write_text(tmp / "metrics.json", metrics_json(in));
     write_text(tmp / "index.html", build_html(in, out.plots, out.message));
-    // Swap into place: the old folder (if any) is moved aside first, removed after.
-    fs::path old;
-    if (fs::exists(target)) {
-      old = target.parent_path() / ("." + target.filename().string() + ".old." + stamp);
-      fs::rename(target, old);
-    }
-    fs::rename(tmp, target);
-    if (!old.empty())
-      fs::remove_all(old);
-  } catch (...) {
-    std::error_code ec;
-    fs::remove_all(tmp, ec);
-    throw;
-  }
+  });
   return out;
 }
 
