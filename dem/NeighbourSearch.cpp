@@ -181,7 +181,8 @@ const NeighbourSearch::Previous* NeighbourSearch::keep_previous(ContactLists& li
   const PairSlot* const from = lists.pairs.data();
   PairSlot* const to = previous_.pairs.get();
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::int64_t k = 0; k < std::int64_t(n_pairs); ++k) std::memcpy(&to[k], &from[k], sizeof(PairSlot));
+  for (std::int64_t k = 0; k < std::int64_t(n_pairs); ++k)  // into raw storage: bytes
+    std::memcpy(static_cast<void*>(&to[k]), &from[k], sizeof(PairSlot));
   // Swapped: the build refills run_start_, lists.walls and lists.wall_offset in the buffers
   // the previous build's copies used (assign and resize keep their capacity).
   previous_.run_start.swap(run_start_);

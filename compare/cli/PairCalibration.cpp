@@ -130,8 +130,12 @@ std::vector<compare::CalibrationCurve> calibration_curves(const CaseDescription 
     const nlohmann::json j = nlohmann::json::parse(read_parameter_file(fit.string(), "fit report (fit.json)"));
     for (const auto &t : j.at("targets")) {
       std::vector<ResidualSummary> rows;
-      for (const auto &[quantity, r] : t.at("residuals").items())
-        rows.push_back({quantity, r.at("fitted").get<bool>(), r.at("rms").get<double>()});
+      for (const auto &[quantity, r] : t.at("residuals").items()) {
+        ResidualSummary summary;
+        summary.quantity = quantity;
+        summary.rms = r.at("rms").get<double>();
+        rows.push_back(summary);
+      }
       out.push_back(row(t.at("file").get<std::string>(), "calibrated on", rows));
     }
   }
