@@ -288,7 +288,7 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
     << "</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
        "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:4px 8px}"
        "td.num{text-align:right;font-family:monospace}th{background:#eee}img{max-width:49%;margin:2px}"
-       ".note{color:#a33}</style></head><body>\n";
+       ".note{color:#a33}td.outside{color:#a33;font-weight:bold}</style></head><body>\n";
   h << "<h1>" << html(in.title) << "</h1>\n";
   if (!in.case_name.empty())
     h << "<p>Case: <code>" << html(in.case_name) << "</code></p>\n";
@@ -374,6 +374,28 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
     h << "<h2>Calibrated continuum parameters</h2>\n<table id=\"calibration\"><tr><th>parameter</th><th>value</th></tr>\n";
     for (const auto &[k, val] : in.calibrated_parameters)
       h << "<tr><td>" << html(k) << "</td><td>" << html(val) << "</td></tr>\n";
+    h << "</table>\n";
+  }
+  if (in.scatter) {
+    const ScatterTable &t = *in.scatter;
+    h << "<h2>Specimen scatter</h2>\n<p>The band of each metric over " << t.specimens.size()
+      << " specimen(s) of the same program (";
+    for (std::size_t k = 0; k < t.specimens.size(); ++k)
+      h << (k ? ", " : "") << html(t.specimens[k]);
+    h << "), and whether each engine's value lies inside it (within 1e-6 of its width).</p>\n"
+         "<table id=\"scatter\"><tr><th>metric</th><th>units</th><th>lowest</th><th>highest</th>";
+    for (const auto &e : t.engines)
+      h << "<th>" << html(e) << "</th>";
+    h << "</tr>\n";
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      const ScatterRow &row = t.rows[r];
+      const std::string path = "scatter/rows/" + std::to_string(r) + "/";
+      h << "<tr><td>" << html(row.label) << "</td><td>" << html(row.units) << "</td>" << num_cell(row.low, path + "low")
+        << num_cell(row.high, path + "high");
+      for (const auto &v : row.verdicts)
+        h << "<td class=\"" << (v == "outside" ? "outside" : "within") << "\">" << html(v) << "</td>";
+      h << "</tr>\n";
+    }
     h << "</table>\n";
   }
   if (!in.calibration_curves.empty()) {
@@ -467,7 +489,24 @@ std::string metrics_json(const ReportInput &in)
       << ", \"rms_q\": " << format_number(c.rms_q) << ", \"rms_p\": " << format_number(c.rms_p)
       << ", \"rms_eps_v\": " << format_number(c.rms_eps_v) << "}";
   }
-  j << (in.calibration_curves.empty() ? "]" : "\n  ]") << "\n}\n";
+  j << (in.calibration_curves.empty() ? "]" : "\n  ]");
+  if (in.scatter) {
+    const ScatterTable &t = *in.scatter;
+    j << ",\n  \"scatter\": {\n    \"specimens\": [";
+    for (std::size_t k = 0; k < t.specimens.size(); ++k)
+      j << (k ? ", " : "") << json_string(t.specimens[k]);
+    j << "],\n    \"rows\": [";
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      const ScatterRow &row = t.rows[r];
+      j << (r ? "," : "") << "\n      {\"key\": " << json_string(row.key) << ", \"low\": " << format_number(row.low)
+        << ", \"high\": " << format_number(row.high) << ", \"verdicts\": {";
+      for (std::size_t e = 0; e < t.engines.size(); ++e)
+        j << (e ? ", " : "") << json_string(t.engines[e]) << ": " << json_string(row.verdicts[e]);
+      j << "}}";
+    }
+    j << "\n    ]\n  }";
+  }
+  j << "\n}\n";
   return j.str();
 }
 

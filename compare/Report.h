@@ -14,6 +14,7 @@
 // Units in the report: MPa, %, degrees; the lateral-pressure curve is compression positive.
 #include "compare/Localization.h"
 #include "compare/Metrics.h"
+#include "compare/Scatter.h"
 #include "compare/Verdict.h"
 
 #include <filesystem>
@@ -55,6 +56,8 @@ struct ReportInput {
   std::vector<DisplacementMap> maps; ///< mid-section maps (S0 Fig. 4 style)
   std::vector<std::pair<std::string, std::string>> calibrated_parameters;
   std::vector<CalibrationCurve> calibration_curves;
+  /// The DEM's specimen-to-specimen scatter and each continuum engine's verdict (Scatter.h).
+  std::optional<ScatterTable> scatter;
   std::vector<std::string> notes;
 };
 

@@ -40,6 +40,8 @@ struct CalibrationParameters {
   std::string pair_continuum = "as given";
   /// In a calibrated pair, the pair's DEM run "fitted" or "held out" (predicted, not fitted).
   std::string pair_dem = "fitted";
+  /// Results files of the pair's program on other specimens: the DEM's scatter band in the report.
+  std::vector<std::string> scatter;
 
   /// Every entry, written as the case file gives it (bounds as `name:lower:upper`,
   /// quantities as `name:weight`); read-only (the lists are rebuilt for writing).
@@ -60,6 +62,7 @@ struct CalibrationParameters {
     v("max iterations", p.max_iterations);
     v("pair continuum", p.pair_continuum);
     v("pair dem", p.pair_dem);
+    v("scatter", p.scatter);
     v("output file", p.output_file);
   }
 };

@@ -48,6 +48,10 @@ void declare_calibration(dealii::ParameterHandler &prm)
                     "In a calibrated pair, whether the pair's own DEM run is among the curves fitted, or held "
                     "out: fitted to the targets alone, the continuum then predicts the pair's program, and the "
                     "report separates the curves calibrated on (fit residuals) from the one predicted.");
+  prm.declare_entry("scatter", "", Anything(),
+                    "Comma-separated results files of the pair's program run on other specimens (seeds, store "
+                    "variants): with the pair's own DEM run they give each metric's specimen-to-specimen band, "
+                    "and `pair`'s report says whether each continuum engine's value lies within it.");
   prm.declare_entry("output file", "calibrated.prm", Anything(),
                     "The calibrated 'subsection continuum' fragment, written to <output directory>/calibration/; "
                     "case files pull it in with 'include <path>'.");
@@ -70,6 +74,7 @@ CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Rea
   p.output_file = prm.get("output file");
   p.pair_continuum = prm.get("pair continuum");
   p.pair_dem = prm.get("pair dem");
+  p.scatter = dealii::Utilities::split_string_list(prm.get("scatter"));
   prm.leave_subsection();
 
   for (const auto &w : weights) {

@@ -9,6 +9,7 @@
 #include "compare/LocalizationOnsets.h"
 #include "compare/Metrics.h"
 #include "compare/calibrate/FitReport.h"
+#include "common/ResponseFile.h"
 
 #include <algorithm>
 #include <optional>
@@ -25,6 +26,25 @@ std::string label_of(const std::string &engine)
   if (engine == "continuum")
     return "FE cube";
   return "material point";
+}
+
+/// The DEM's band over this pair's DEM run and the results files of calibration/scatter (the
+/// same program on other specimens), each continuum engine judged against it (compare/Scatter.h).
+compare::ScatterTable specimen_scatter(const CaseDescription &c, const std::vector<compare::NamedMetrics> &metrics,
+                                       const compare::MetricOptions &options)
+{
+  std::vector<std::string> names, engines;
+  std::vector<compare::MetricSet> specimens, judged;
+  for (const auto &m : metrics) {
+    const bool dem = m.label == label_of("dem");
+    (dem ? specimens : judged).push_back(m.metrics);
+    (dem ? names : engines).push_back(dem ? results_file("dem") : m.label);
+  }
+  for (const std::string &file : c.calibration.scatter) {
+    specimens.push_back(compare::compute_metrics(with_interval_means(read_response(file)), options));
+    names.push_back(file);
+  }
+  return compare::scatter_table(names, specimens, engines, judged);
 }
 } // namespace
 
@@ -53,6 +73,8 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
       in.notes.push_back(label_of(engine) + ": metrics not computed: " + e.what());
     }
   }
+  if (!c.calibration.scatter.empty())
+    in.scatter = specimen_scatter(c, in.metrics, options);
   // Rudnicki-Rice: the theory along the material-point path against each engine's onset.
   const Response *point = nullptr;
   std::vector<compare::OnsetEstimate> onsets;

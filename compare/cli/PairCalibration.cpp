@@ -48,6 +48,11 @@ std::vector<FitTarget> case_targets(const CaseDescription &c)
 
 void validate_pair_calibration(const CaseDescription &c)
 {
+  for (const std::string &f : c.calibration.scatter)
+    if (!fs::is_regular_file(f))
+      throw CaseError(c.file, "calibration/scatter",
+                      "'" + f + "' is not a results file (expected the .h5 of the pair's program run on another "
+                      "specimen)");
   if (!pair_calibrates(c))
     return;
   if (std::find(c.engines.begin(), c.engines.end(), "dem") == c.engines.end() && c.calibration.targets.empty())

@@ -1,7 +1,9 @@
 """The calibrated pair (calibration/pair continuum = calibrated): curves made by the material
 point with known parameters, given as the targets, are recovered by `geocomp pair` to 1e-6;
 the material point then runs the calibrated section and reproduces the target's curve; its
-results store that section; a second pair reuses them; inconsistent cases are refused."""
+results store that section; a second pair reuses them; the report judges it "within scatter"
+of the target for every metric, and a continuum with a lower peak friction "outside";
+inconsistent cases are refused."""
 import os
 import pathlib
 import tempfile
@@ -61,6 +63,7 @@ class ACalibratedPair(unittest.TestCase):
             assert done.returncode == 0, done.stderr
             cls.targets.append(str(out / "material-point.h5"))
         cls.calibration = ("subsection calibration\n  set targets = " + ", ".join(cls.targets) + "\n"
+                           f"  set scatter = {cls.targets[1]}\n"
                            "  set free parameters = E, nu, cohesion, friction[1], dilatancy[1]\n"
                            "  set starting values = case\n  set pair continuum = calibrated\nend\n")
         cls.out = cls.root / "fit"
@@ -68,6 +71,10 @@ class ACalibratedPair(unittest.TestCase):
                               psi=3)
         cls.first = run_cli("pair", cls.case)
         cls.second = run_cli("pair", cls.case)
+        cls.other_out = cls.root / "other"  # a different continuum, as given: phi_peak 28 degrees
+        other = write_case(cls.root / "other.prm", 2e5, cls.other_out,
+                           f"subsection calibration\n  set scatter = {cls.targets[1]}\nend\n", phi=28)
+        cls.other = run_cli("pair", other)
 
     @classmethod
     def tearDownClass(cls):
@@ -103,6 +110,20 @@ class ACalibratedPair(unittest.TestCase):
             self.assertEqual(c["role"], "calibrated on")
             for q in ("rms_q", "rms_p", "rms_eps_v"):
                 self.assertLess(c[q], 1e-6, f"{c['curve']} {q}")
+
+    def test_the_report_says_within_scatter_for_every_metric_and_outside_for_another_continuum(self):
+        import json
+        within = json.loads((self.out / "report" / "metrics.json").read_text())["scatter"]
+        self.assertEqual(within["specimens"], [self.targets[1]])
+        defined = [r for r in within["rows"] if r["verdicts"]["material point"] != "n/a"]
+        self.assertGreaterEqual(len(defined), 6)
+        for r in defined:
+            self.assertEqual(r["verdicts"]["material point"], "within scatter", r["key"])
+        self.assertEqual(self.other.returncode, 0, self.other.stderr)
+        outside = json.loads((self.other_out / "report" / "metrics.json").read_text())["scatter"]
+        verdicts = {r["key"]: r["verdicts"]["material point"] for r in outside["rows"]}
+        self.assertEqual(verdicts["peak_stress_MPa"], "outside")
+        self.assertIn("Specimen scatter", (self.other_out / "report" / "index.html").read_text())
 
     def test_a_second_pair_refits_to_the_same_bits_and_reuses_the_results(self):
         self.assertEqual(self.second.returncode, 0, self.second.stderr)
