@@ -3,6 +3,7 @@
 #include "common/AtomicFile.h"
 #include "common/Subprocess.h"
 #include "compare/GnuplotString.h"
+#include "compare/HtmlString.h"
 #include "compare/JsonString.h"
 
 #include <algorithm>
@@ -38,19 +39,6 @@ double shown_difference(double a, double b)
 
 namespace {
 
-std::string html(const std::string &s)
-{
-  std::string out;
-  for (char c : s)
-    switch (c) {
-    case '&': out += "&amp;"; break;
-    case '<': out += "&lt;"; break;
-    case '>': out += "&gt;"; break;
-    case '"': out += "&quot;"; break;
-    default: out += c;
-    }
-  return out;
-}
 
 /// RFC 6901 escaping of one pointer token.
 std::string pointer_token(const std::string &s)
@@ -64,7 +52,7 @@ std::string pointer_token(const std::string &s)
 /// A numeric table cell bound to its JSON location.
 std::string num_cell(double v, const std::string &path)
 {
-  return "<td class=\"num\" data-path=\"" + html(path) + "\">" +
+  return "<td class=\"num\" data-path=\"" + html_text(path) + "\">" +
          (std::isfinite(v) ? format_number(v) : std::string("&mdash;")) + "</td>";
 }
 
@@ -284,43 +272,43 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
 {
   const CurveKind kind = report_kind(in);
   std::ostringstream h;
-  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html(in.title)
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_text(in.title)
     << "</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
        "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:4px 8px}"
        "td.num{text-align:right;font-family:monospace}th{background:#eee}img{max-width:49%;margin:2px}"
        ".note{color:#a33}td.outside{color:#a33;font-weight:bold}</style></head><body>\n";
-  h << "<h1>" << html(in.title) << "</h1>\n";
+  h << "<h1>" << html_text(in.title) << "</h1>\n";
   if (!in.case_name.empty())
-    h << "<p>Case: <code>" << html(in.case_name) << "</code></p>\n";
+    h << "<p>Case: <code>" << html_text(in.case_name) << "</code></p>\n";
   h << "<p>Curve: " << (kind == CurveKind::ShearIsochoric
                           ? "&tau;<sub>max</sub> &ndash; &gamma;<sub>max</sub> (isochoric shear, S0 program 1)"
                           : "&sigma;<sub>a</sub> &ndash; &epsilon;<sub>a</sub> on the axial axis a = " +
-                              html(in.axial.value_or(AxialAxis{}).describe()) + " (S0 program 2)")
+                              html_text(in.axial.value_or(AxialAxis{}).describe()) + " (S0 program 2)")
     << ". Logarithmic strains ln(L/L<sub>0</sub>) of the box edges from the start of the analysed stage and "
        "Cauchy stresses (force over current area), the same measures for every engine; units MPa, %, degrees. Computed tension positive "
        "inside geocomp; volumetric strain is shown dilation positive, p compression positive. "
        "Definitions: docs/metrics.md. Numbers also in <a href=\"metrics.json\">metrics.json</a>.</p>\n";
   for (const auto &n : in.notes)
-    h << "<p class=\"note\">" << html(n) << "</p>\n";
+    h << "<p class=\"note\">" << html_text(n) << "</p>\n";
 
   h << "<h2>Plots</h2>\n";
   if (!plot_message.empty())
-    h << "<p class=\"note\">" << html(plot_message) << "</p>\n";
+    h << "<p class=\"note\">" << html_text(plot_message) << "</p>\n";
   for (const auto &p : pngs)
-    h << "<a href=\"" << html(p) << "\"><img src=\"" << html(p) << "\" alt=\"" << html(p) << "\"></a>\n";
+    h << "<a href=\"" << html_text(p) << "\"><img src=\"" << html_text(p) << "\" alt=\"" << html_text(p) << "\"></a>\n";
 
   if (!in.metrics.empty()) {
     h << "<h2>Metrics</h2>\n<table id=\"metrics\"><tr><th>metric</th><th>units</th>";
     for (const auto &m : in.metrics)
-      h << "<th>" << html(m.label) << "</th>";
+      h << "<th>" << html_text(m.label) << "</th>";
     for (std::size_t k = 1; k < in.metrics.size(); ++k)
-      h << "<th>" << html(difference_label(in, k)) << "</th>";
+      h << "<th>" << html_text(difference_label(in, k)) << "</th>";
     h << "</tr>\n";
     std::vector<std::vector<MetricValue>> tables;
     for (const auto &m : in.metrics)
       tables.push_back(metric_table(m.metrics));
     for (std::size_t r = 0; r < tables[0].size(); ++r) {
-      h << "<tr><td>" << html(tables[0][r].label) << "</td><td>" << html(tables[0][r].units) << "</td>";
+      h << "<tr><td>" << html_text(tables[0][r].label) << "</td><td>" << html_text(tables[0][r].units) << "</td>";
       for (std::size_t k = 0; k < tables.size(); ++k)
         h << num_cell(tables[k][r].value,
                       "metrics/" + pointer_token(in.metrics[k].label) + "/" + pointer_token(tables[k][r].key));
@@ -331,21 +319,21 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
     }
     h << "<tr><td>elastic limit method</td><td></td>";
     for (const auto &m : in.metrics)
-      h << "<td>" << html(m.metrics.elastic_limit_method.empty() ? "none" : m.metrics.elastic_limit_method) << "</td>";
+      h << "<td>" << html_text(m.metrics.elastic_limit_method.empty() ? "none" : m.metrics.elastic_limit_method) << "</td>";
     h << "</tr>\n</table>\n";
     for (const auto &m : in.metrics) {
       if (m.metrics.notes.empty())
         continue;
-      h << "<p><b>" << html(m.label) << "</b> notes:</p><ul>";
+      h << "<p><b>" << html_text(m.label) << "</b> notes:</p><ul>";
       for (const auto &n : m.metrics.notes)
-        h << "<li>" << html(n) << "</li>";
+        h << "<li>" << html_text(n) << "</li>";
       h << "</ul>\n";
     }
   }
 
   if (in.verdict) {
     const RrVerdict &v = *in.verdict;
-    h << "<h2>Rudnicki&ndash;Rice verdict</h2>\n<p>" << html(v.summary)
+    h << "<h2>Rudnicki&ndash;Rice verdict</h2>\n<p>" << html_text(v.summary)
       << " Angle: band normal from the most compressive principal axis. Tolerances: onset within max("
       << format_number(v.tolerances.strain_relative * 100) << " % of the prediction, "
       << format_number(v.tolerances.strain_absolute * 100) << " % strain), angle within "
@@ -353,19 +341,19 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
       << "<table id=\"verdict\"><tr><th>source</th><th>onset strain [%]</th><th>angle [deg]</th>"
          "<th>&Delta; strain [%]</th><th>&Delta; strain rel. [%]</th><th>&Delta; angle [deg]</th><th>verdict</th></tr>\n";
     const OnsetDisplay p = display(v.predicted);
-    h << "<tr><td>" << html(v.predicted.source) << " (prediction)</td>" << num_cell(p.strain_pct, "rudnicki_rice/predicted/onset_strain_pct")
+    h << "<tr><td>" << html_text(v.predicted.source) << " (prediction)</td>" << num_cell(p.strain_pct, "rudnicki_rice/predicted/onset_strain_pct")
       << num_cell(p.angle_deg, "rudnicki_rice/predicted/angle_deg") << "<td></td><td></td><td></td><td>"
-      << html(v.predicted.found ? v.predicted.note : "no onset predicted") << "</td></tr>\n";
+      << html_text(v.predicted.found ? v.predicted.note : "no onset predicted") << "</td></tr>\n";
     for (std::size_t k = 0; k < v.rows.size(); ++k) {
       const auto &r = v.rows[k];
       const OnsetDisplay d = display(r.onset);
       const std::string base = "rudnicki_rice/rows/" + std::to_string(k) + "/";
-      h << "<tr><td>" << html(r.onset.source) << "</td>" << num_cell(d.strain_pct, base + "onset_strain_pct")
+      h << "<tr><td>" << html_text(r.onset.source) << "</td>" << num_cell(d.strain_pct, base + "onset_strain_pct")
         << num_cell(d.angle_deg, base + "angle_deg")
         << num_cell(r.comparable ? r.strain_difference * 100 : NAN, base + "strain_difference_pct")
         << num_cell(r.comparable ? r.strain_relative * 100 : NAN, base + "strain_relative_pct")
         << num_cell(r.comparable ? r.angle_difference_deg : NAN, base + "angle_difference_deg") << "<td>"
-        << html(r.verdict) << "</td></tr>\n";
+        << html_text(r.verdict) << "</td></tr>\n";
     }
     h << "</table>\n";
   }
@@ -373,7 +361,7 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
   if (!in.calibrated_parameters.empty()) {
     h << "<h2>Calibrated continuum parameters</h2>\n<table id=\"calibration\"><tr><th>parameter</th><th>value</th></tr>\n";
     for (const auto &[k, val] : in.calibrated_parameters)
-      h << "<tr><td>" << html(k) << "</td><td>" << html(val) << "</td></tr>\n";
+      h << "<tr><td>" << html_text(k) << "</td><td>" << html_text(val) << "</td></tr>\n";
     h << "</table>\n";
   }
   if (in.scatter) {
@@ -381,19 +369,19 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
     h << "<h2>Specimen scatter</h2>\n<p>The band of each metric over " << t.specimens.size()
       << " specimen(s) of the same program (";
     for (std::size_t k = 0; k < t.specimens.size(); ++k)
-      h << (k ? ", " : "") << html(t.specimens[k]);
+      h << (k ? ", " : "") << html_text(t.specimens[k]);
     h << "), and whether each engine's value lies inside it (within 1e-6 of its width).</p>\n"
          "<table id=\"scatter\"><tr><th>metric</th><th>units</th><th>lowest</th><th>highest</th>";
     for (const auto &e : t.engines)
-      h << "<th>" << html(e) << "</th>";
+      h << "<th>" << html_text(e) << "</th>";
     h << "</tr>\n";
     for (std::size_t r = 0; r < t.rows.size(); ++r) {
       const ScatterRow &row = t.rows[r];
       const std::string path = "scatter/rows/" + std::to_string(r) + "/";
-      h << "<tr><td>" << html(row.label) << "</td><td>" << html(row.units) << "</td>" << num_cell(row.low, path + "low")
+      h << "<tr><td>" << html_text(row.label) << "</td><td>" << html_text(row.units) << "</td>" << num_cell(row.low, path + "low")
         << num_cell(row.high, path + "high");
       for (const auto &v : row.verdicts)
-        h << "<td class=\"" << (v == "outside" ? "outside" : "within") << "\">" << html(v) << "</td>";
+        h << "<td class=\"" << (v == "outside" ? "outside" : "within") << "\">" << html_text(v) << "</td>";
       h << "</tr>\n";
     }
     h << "</table>\n";
@@ -407,7 +395,7 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
     for (std::size_t k = 0; k < in.calibration_curves.size(); ++k) {
       const CalibrationCurve &c = in.calibration_curves[k];
       const std::string path = "calibration_curves/" + std::to_string(k) + "/";
-      h << "<tr><td>" << html(c.curve) << "</td><td>" << html(c.role) << "</td>" << num_cell(c.rms_q, path + "rms_q")
+      h << "<tr><td>" << html_text(c.curve) << "</td><td>" << html_text(c.role) << "</td>" << num_cell(c.rms_q, path + "rms_q")
         << num_cell(c.rms_p, path + "rms_p") << num_cell(c.rms_eps_v, path + "rms_eps_v") << "</tr>\n";
     }
     h << "</table>\n";

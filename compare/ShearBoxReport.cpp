@@ -3,6 +3,7 @@
 #include "common/AtomicFile.h"
 #include "common/Subprocess.h"
 #include "compare/GnuplotString.h"
+#include "compare/HtmlString.h"
 
 
 #include <algorithm>
@@ -20,18 +21,6 @@ namespace geocomp::compare {
 
 namespace {
 
-std::string html(const std::string& s)
-{
-  std::string out;
-  for (char c : s) switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  return out;
-}
 
 std::string fmt(double v, const char* f = "%.4g")
 {
@@ -158,7 +147,7 @@ std::string run_table(const std::vector<ShearBoxRun>& runs)
        "<th>seed</th><th>e at shear start</th><th>shear speed [m/s]</th><th>I</th><th>peak &mu;<sub>b</sub> (at U mm)</th>"
        "<th>residual &mu;<sub>b</sub></th><th>max contraction [mm]</th><th>final lid rise [mm]</th><th>wall time [s]</th></tr>\n";
   for (const ShearBoxRun& r : runs)
-    h << "<tr><td>" << html(r.name) << "</td><td>" << box_label(r.box_length) << "</td><td>" << r.clumps << "</td><td>"
+    h << "<tr><td>" << html_text(r.name) << "</td><td>" << box_label(r.box_length) << "</td><td>" << r.clumps << "</td><td>"
       << fmt(1e-3 * r.normal_stress, "%.0f") << "</td><td>" << fmt(r.contact_friction, "%.3g") << "</td><td>" << r.seed
       << "</td><td>" << fmt(r.void_ratio, "%.3f") << "</td><td>" << fmt(r.shear_speed, "%.3g") << "</td><td>"
       << fmt(r.inertial_number, "%.2e") << "</td><td>" << fmt(r.peak_mu_b, "%.3f") << " (" << fmt(1e3 * r.shear_at_peak, "%.1f")
@@ -175,7 +164,7 @@ std::string series_table(const std::vector<MuBSeries>& series, const std::string
        "<th>mean residual &mu;<sub>b</sub></th></tr>\n";
   for (const MuBSeries& s : series)
     for (const MuBPoint& p : s.points)
-      h << "<tr><td>" << html(s.label) << "</td><td>" << fmt(x_scale * p.x, "%.3g") << "</td><td>" << p.peak.size()
+      h << "<tr><td>" << html_text(s.label) << "</td><td>" << fmt(x_scale * p.x, "%.3g") << "</td><td>" << p.peak.size()
         << "</td><td>" << fmt(p.mean_peak(), "%.3f") << " (" << fmt(*std::min_element(p.peak.begin(), p.peak.end()), "%.3f")
         << "-" << fmt(*std::max_element(p.peak.begin(), p.peak.end()), "%.3f") << ")</td><td>"
         << fmt(p.mean_residual(), "%.3f") << "</td></tr>\n";
@@ -202,7 +191,7 @@ std::string build_html(const std::vector<ShearBoxRun>& runs, bool plots, const s
   h << "<h2>Fig. 7 series (means over seeds)</h2>\n"
     << series_table(mu_b_against_normal_stress(runs), "&sigma;<sub>n</sub> [kPa]", 1e-3)
     << series_table(mu_b_against_contact_friction(runs), "contact &mu;", 1.0);
-  if (!message.empty()) h << "<p><b>" << html(message) << "</b></p>\n";
+  if (!message.empty()) h << "<p><b>" << html_text(message) << "</b></p>\n";
   if (plots)
     h << "<h2>Fig. 5</h2>\n<img src=\"fig5.png\" alt=\"Fig. 5\">\n<h2>Fig. 7</h2>\n<img src=\"fig7.png\" alt=\"Fig. 7\">\n";
   h << "</body></html>\n";

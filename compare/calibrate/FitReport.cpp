@@ -4,6 +4,7 @@
 #include "common/Subprocess.h"
 #include "common/Tensor.h"
 #include "compare/GnuplotString.h"
+#include "compare/HtmlString.h"
 #include "compare/JsonString.h"
 #include "compare/Metrics.h"
 
@@ -19,6 +20,7 @@ namespace geocomp::calibration {
 namespace fs = std::filesystem;
 
 namespace {
+using compare::html_text;
 using compare::json_string;
 
 std::string num(double v, int digits = 10)
@@ -52,13 +54,6 @@ double abscissa(const ResponseSample &s, compare::CurveKind kind)
   return 100.0 * (kind == compare::CurveKind::AxialLateral ? -s.strain(2, 2) : gamma_max(s.strain));
 }
 
-std::string html_text(const std::string &s)
-{
-  std::string out;
-  for (char c : s)
-    out += c == '<' ? std::string("&lt;") : c == '>' ? std::string("&gt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
-  return out;
-}
 
 std::string fitted_names(const CalibrationResult &r)
 {
