@@ -20,7 +20,9 @@ void declare_calibration(dealii::ParameterHandler &prm)
   prm.declare_entry("targets", "", Anything(),
                     "Comma-separated results files (.h5, e.g. results/<case>/dem.h5) whose main-path curves "
                     "are fitted; each file carries the case it was run from, so its loading program is "
-                    "replayed on the material point.");
+                    "replayed on the material point. A case file (.prm, .json) stands for its DEM run "
+                    "(<its output directory>/dem.h5), which `pair` and `calibrate` run first (reused when "
+                    "up to date).");
   prm.declare_entry("weights", "", Anything(), "One weight per target (default: all 1).");
   prm.declare_entry("free parameters", "E, nu, cohesion, friction, dilatancy", Anything(),
                     "Continuum parameters to fit: E, nu, and the tables cohesion, friction, dilatancy "

@@ -7,6 +7,7 @@
 #include "Mpi.h"
 #include "OutputFolderLock.h"
 #include "PairCalibration.h"
+#include "TargetCases.h"
 
 #include "common/ProgramRunner.h"
 #include "compare/calibrate/Calibration.h"
@@ -94,7 +95,6 @@ Command calibrate_command()
                         "behind drucker-prager): expected mohr-coulomb or drucker-prager, got nikolaevsky");
       if (c.calibration.targets.empty())
         throw CaseError(c.file, "calibration/targets", "expected at least one results file to fit");
-      targets = case_targets(c);
     } catch (const CaseError &e) {
       log::error(e.what());
       return static_cast<int>(bad_input);
@@ -107,6 +107,22 @@ Command calibrate_command()
     } catch (const CaseError &e) {
       log::error(e.what());
       return static_cast<int>(bad_input);
+    }
+    try {
+      if (std::any_of(c.calibration.targets.begin(), c.calibration.targets.end(), names_target_case)) {
+        ensure_mpi();
+        RunSettings settings;
+        settings.comm = MPI_COMM_SELF;
+        settings.command_line = "geocomp calibrate " + c.file;
+        run_target_cases(c, settings); // their DEM runs, reused when up to date
+      }
+      targets = case_targets(c);
+    } catch (const CaseError &e) {
+      log::error(e.what());
+      return static_cast<int>(bad_input);
+    } catch (const std::exception &e) {
+      log::error(std::string("run failed: ") + e.what());
+      return static_cast<int>(run_failure);
     }
     try {
       const StartingValues start = starting_values(c.continuum, targets, c.calibration);

@@ -5,6 +5,7 @@
 #include "MidPlane.h"
 #include "Mpi.h"
 #include "PairCalibration.h"
+#include "TargetCases.h"
 
 #include "compare/LocalizationOnsets.h"
 #include "compare/Metrics.h"
@@ -167,6 +168,7 @@ PairOutcome pair_case(const CaseDescription &c, const fs::path &dir, const RunSe
     std::optional<Response> dem;
     if (std::find(engines.begin(), engines.end(), "dem") != engines.end())
       dem = run_engine("dem", c, dir, settings);
+    run_target_cases(c, settings);
     const CaseDescription calibrated = calibrate_for_pair(c, dem ? &*dem : nullptr, dir, settings.comm);
     for (const auto &engine : engines)
       outcome.runs.emplace_back(engine, engine == "dem" ? *dem : run_engine(engine, calibrated, dir, settings));

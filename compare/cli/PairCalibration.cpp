@@ -1,5 +1,6 @@
 #include "PairCalibration.h"
 #include "Engines.h"
+#include "TargetCases.h"
 #include "Log.h"
 #include "Mpi.h"
 
@@ -27,22 +28,32 @@ fs::path fragment_path(const CaseDescription &c, const fs::path &dir)
 
 bool pair_calibrates(const CaseDescription &c) { return c.calibration.pair_continuum == "calibrated"; }
 
+namespace {
+/// The target `f` of c's calibration/targets (a results file, or the DEM run of a case file), weight `w`.
+FitTarget load_case_target(const CaseDescription &c, const std::string &f, double w)
+{
+  const std::string file = target_results_file(f);
+  const std::string of = file == f ? "" : " (the DEM run of target case '" + f + "')";
+  if (!fs::exists(file))
+    throw CaseError(c.file, "calibration/targets",
+                    "'" + file + "'" + of + " does not exist (run the target case first, e.g. `geocomp dem <case>`)");
+  if (!fs::is_regular_file(file))
+    throw CaseError(c.file, "calibration/targets",
+                    "'" + file + "'" + of + " is not a regular file: expected a results file (.h5)");
+  try {
+    return load_target(file, w);
+  } catch (const CalibrationError &e) {
+    throw CaseError(c.file, "calibration/targets", e.what());
+  }
+}
+} // namespace
+
 std::vector<FitTarget> case_targets(const CaseDescription &c)
 {
   std::vector<FitTarget> targets;
-  for (std::size_t k = 0; k < c.calibration.targets.size(); ++k) {
-    const std::string &f = c.calibration.targets[k];
-    if (!fs::exists(f))
-      throw CaseError(c.file, "calibration/targets",
-                      "'" + f + "' does not exist (run the target case first, e.g. `geocomp dem <case>`)");
-    if (!fs::is_regular_file(f))
-      throw CaseError(c.file, "calibration/targets", "'" + f + "' is not a regular file: expected a results file (.h5)");
-    try {
-      targets.push_back(load_target(f, c.calibration.weights.empty() ? 1.0 : c.calibration.weights[k]));
-    } catch (const CalibrationError &e) {
-      throw CaseError(c.file, "calibration/targets", e.what());
-    }
-  }
+  for (std::size_t k = 0; k < c.calibration.targets.size(); ++k)
+    targets.push_back(load_case_target(c, c.calibration.targets[k],
+                                       c.calibration.weights.empty() ? 1.0 : c.calibration.weights[k]));
   return targets;
 }
 
@@ -69,7 +80,10 @@ void validate_pair_calibration(const CaseDescription &c)
                     "calibrated: the calibration fits the Mohr-Coulomb parameters (E, nu, cohesion, friction, "
                     "dilatancy, also behind drucker-prager), expected continuum/model mohr-coulomb or "
                     "drucker-prager, got nikolaevsky");
-  case_targets(c);
+  validate_target_cases(c);
+  for (const std::string &f : c.calibration.targets) // a target case's results are made by the run
+    if (!names_target_case(f))
+      load_case_target(c, f, 1.0);
 }
 
 std::string calibration_summary(const CalibrationResult &r)

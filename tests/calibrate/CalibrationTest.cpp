@@ -84,6 +84,24 @@ TEST(CalibrationRoundTrip, RecoversFiveParametersFromThreeCurvesWithoutNoise)
               r.initial_cost, r.final_cost);
 }
 
+TEST(CalibrationRoundTrip, AKnotThatStartsOnItsBoundIsFittedNotRefused)
+{
+  // The truth's dilatancy is 0 at kappa = 0, the lower bound: the central differences of
+  // the first Jacobian must not step outside the model's range (they did: "the material
+  // point fails at the starting values").
+  CalibrationParameters c = free_five();
+  c.free_parameters = {"E", "nu", "cohesion", "friction[1]", "dilatancy"};
+  ContinuumParameters start = perturbed();
+  ASSERT_EQ(start.dilatancy_angle.points[0].second, 0.0);
+  const CalibrationResult r = calibrate(start, three_confinements(0.0), c);
+  const std::vector<double> expected = {80e6, 0.3, 30e3, 32.0, 0.0, 8.0};
+  ASSERT_EQ(r.value.size(), expected.size());
+  // A knot that ends on its bound stays 1e-6 of its range inside it (6e-5 deg here).
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    EXPECT_NEAR(r.value[i], expected[i], expected[i] == 0.0 ? 1e-4 : 1e-5 * std::abs(expected[i]))
+      << r.parameters[i].name;
+}
+
 TEST(CalibrationRoundTrip, RecoversFiveParametersToOnePercentWithNoise)
 {
   const auto targets = three_confinements(0.002);
