@@ -254,6 +254,7 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
       keep_limit_state(index, response_.samples.size() - 1);
 
     const ResponseSample now = response_.samples.back(); // a copy: branches append samples
+    const std::size_t now_index = response_.samples.size() - 1; // every trigger here leaves from it
     for (std::size_t k = 0; k < stage.unload_at.size(); ++k) {
       if (fired[k])
         continue;
@@ -265,7 +266,7 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
         }
       } else if (holds(trigger.condition, now, ctx)) {
         fired[k] = true;
-        run_branch(index, control, {trigger.text, response_.samples.size() - 1, nullptr});
+        run_branch(index, control, {trigger.text, now_index, nullptr});
       }
     }
     if (reason.empty() && checkpoints_.write) {

@@ -37,9 +37,9 @@ continuum::MaterialParameters hardening_point()
   return m;
 }
 
-/// S0's isochoric shear (lambda = 0) to gamma_max = 5 %, sampled every `interval` seconds
+/// S0's isochoric shear (lambda = 0) to gamma_max = `stop`, sampled every `interval` seconds
 /// (gamma_max grows by about 0.1 `interval`), with branches at `triggers`.
-LoadingProgram isochoric(double interval, const std::vector<std::string> &triggers)
+LoadingProgram isochoric(double interval, const std::vector<std::string> &triggers, double stop = 0.045)
 {
   LoadingProgram p;
   p.sample_interval = interval;
@@ -47,7 +47,7 @@ LoadingProgram isochoric(double interval, const std::vector<std::string> &trigge
   s.name = "isochoric";
   s.isochoric = true;
   s.isochoric_rate = 0.05;
-  s.stop_any = {parse_condition("gamma_max >= 0.05", "test")};
+  s.stop_any = {parse_condition("gamma_max >= " + std::to_string(stop), "test")};
   s.max_duration = 100.0;
   for (const std::string &t : triggers)
     s.unload_at.push_back(parse_trigger(t, "test"));
@@ -104,7 +104,7 @@ TEST(ElasticLimitBisection, MaterialPointBracketHoldsTheCrossingOfAFineGridOfBra
   std::vector<std::string> grid;
   for (double g = lo - 0.002; g < hi + 0.002; g += 2e-4)
     grid.push_back("gamma_max >= " + std::to_string(g));
-  const MetricSet fine = compute_metrics(run(isochoric(0.002, grid)), shear());
+  const MetricSet fine = compute_metrics(run(isochoric(0.002, grid, hi + 0.0025)), shear());
   ASSERT_EQ(fine.branches.size(), grid.size());
   double crossing = NAN;
   for (std::size_t k = 1; k < fine.branches.size(); ++k) {
@@ -148,7 +148,7 @@ TEST(ElasticLimitBisection, MaterialPointBracketHoldsTheCrossingOfAFineGridOfBra
 // the limit lies beyond the last branch instead of inventing one.
 TEST(ElasticLimitBisection, MaterialPointWithoutACrossingGetsNoBracketAndSaysSo)
 {
-  LoadingProgram program = isochoric(0.02, {"gamma_max >= 0.001", "gamma_max >= 0.0015"});
+  LoadingProgram program = isochoric(0.005, {"gamma_max >= 0.0005", "gamma_max >= 0.001"}, 0.01);
   program.stages[0].locate_elastic_limit = true;
   const Response r = run(program);
   EXPECT_EQ(r.branches.size(), 2u);
