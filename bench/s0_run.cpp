@@ -18,9 +18,14 @@
 // It prints lines to grep: `phase`, `response` (every fifth sample: gamma_max, the interval
 // means of the stresses, the box volume), `shear`, `memory`, `total`. Same seed (2022) and
 // N as a case file with these values: the same specimen and response bit for bit.
-// Usage: geocomp-bench-s0 N THREADS [GAMMA_MAX] [--packing FILE.xyzr]. Bad arguments exit
-// 2 before anything runs; a run that stops mid-way exits 1 and says why. Writes no files.
+// With --locate TOL the stage also locates the elastic limit (`locate elastic limit`,
+// tolerance TOL, docs/metrics.md): `branch` lines give each branch's start strain and
+// residual, `bracket` the located bracket and the wall time of the bisection branches.
+// Usage: geocomp-bench-s0 N THREADS [GAMMA_MAX] [--packing FILE.xyzr] [--locate TOL]. Bad
+// arguments exit 2 before anything runs; a run that stops mid-way exits 1 and says why.
+// Writes no files.
 #include "bench/PeakResident.h"
+#include "common/ElasticLimitBracket.h"
 #include "common/ProgramRunner.h"
 #include "common/Tensor.h"
 #include "dem/program/DemEngine.h"
@@ -51,6 +56,7 @@ struct Arguments
   int threads = 1;
   double gamma_max = 0.30;  ///< cases/s0_isochoric_lambda0.prm: stop when gamma_max >= 0.30
   std::string packing;      ///< xyzr file; empty: the packing tools make the specimen
+  double locate = 0.0;      ///< elastic limit tolerance; 0: not located
 };
 
 /// The arguments, or none with the reason in `why`.
@@ -66,6 +72,13 @@ std::optional<Arguments> parse_arguments(int argc, char **argv, std::string &why
         return std::nullopt;
       }
       a.packing = argv[++k];
+    } else if (arg == "--locate") {
+      char *end = nullptr;
+      a.locate = k + 1 < argc ? std::strtod(argv[++k], &end) : 0.0;
+      if (!end || *end != '\0' || !(a.locate > 0.0 && a.locate < 0.1)) {
+        why = "--locate needs a tolerance in (0, 0.1) (a strain)";
+        return std::nullopt;
+      }
     } else {
       positional.push_back(arg);
     }
@@ -130,7 +143,7 @@ DemCase s0_case(const Arguments &a)
 }
 
 /// The case's program: one isochoric stage (S0 eq. (3)) to gamma_max >= `gamma_max`.
-LoadingProgram s0_program(double gamma_max)
+LoadingProgram s0_program(double gamma_max, double locate)
 {
   Stage st;
   st.name = "isochoric shear (S0 eq. 3)";
@@ -143,6 +156,8 @@ LoadingProgram s0_program(double gamma_max)
   st.max_duration = 2.0;
   for (const char *t : {"gamma_max >= 0.005", "gamma_max >= 0.01", "gamma_max >= 0.03", "peak", "peak_drop >= 0.1"})
     st.unload_at.push_back(parse_trigger(t, "program/stage 1/unload at"));
+  st.locate_elastic_limit = locate > 0.0;
+  st.elastic_limit_tolerance = locate > 0.0 ? locate : st.elastic_limit_tolerance;
   LoadingProgram p;
   p.stages = {st};
   p.sample_interval = 0.002;
@@ -199,7 +214,26 @@ struct ShearResult
   bool complete = false;
   std::string status;
   std::size_t samples = 0, branches = 0;
+  double bisection_seconds = 0.0; ///< wall time after the last main-path sample
 };
+
+/// The `branch` lines and the `bracket` line of a run that located its elastic limit.
+void print_branches(const Response &r, const ShearResult &out)
+{
+  const std::vector<BranchPoint> points = branch_points(r, 0, r.samples.front());
+  int bisections = 0;
+  for (const BranchPoint &b : points) {
+    bisections += b.bisection ? 1 : 0;
+    std::printf("branch %d %s start_gamma_pct=%.4f residual_pct=%.4f\n", b.id, b.bisection ? "bisection" : "planned",
+                100 * b.x, 100 * b.residual);
+  }
+  const LimitSearch s = search_limit(points, s0_residual_threshold);
+  if (s.bracketed())
+    std::printf("bracket gamma_max_pct=[%.4f, %.4f] width_pct=%.4f bisection_branches=%d bisection_wall_s=%.2f\n",
+                100 * s.lower->x, 100 * s.upper->x, 100 * s.width(), bisections, out.bisection_seconds);
+  else
+    std::printf("bracket none: no two neighbouring branches straddle 1 %%\n");
+}
 
 /// Runs the program on the engine with the `response` lines; exceptions of the engine come
 /// back as a failed status (ProgramFailed), not thrown.
@@ -208,7 +242,10 @@ ShearResult run_shear(DemEngine &engine, const LoadingProgram &program)
   ProgramRunner runner(program, engine);
   const double volume = engine.reference_lengths().prod();
   std::size_t count = 0;
+  Clock::time_point last_main = Clock::now();
   runner.on_progress([&](const RunProgress &p) {
+    if (p.branch == 0)
+      last_main = Clock::now();
     if (count++ % 5 == 0)
       print_sample(p, volume);
   });
@@ -219,6 +256,9 @@ ShearResult run_shear(DemEngine &engine, const LoadingProgram &program)
     out.complete = out.status == "complete";
     out.samples = r.samples.size();
     out.branches = r.branches.size();
+    out.bisection_seconds = seconds_since(last_main);
+    if (program.stages[0].locate_elastic_limit)
+      print_branches(r, out);
   } catch (const ProgramFailed &f) {
     out.status = f.status;
     out.samples = f.partial.samples.size();
@@ -229,7 +269,7 @@ ShearResult run_shear(DemEngine &engine, const LoadingProgram &program)
 
 int usage(const char *self, const std::string &why)
 {
-  std::fprintf(stderr, "%s: %s\nusage: %s N THREADS [GAMMA_MAX] [--packing FILE.xyzr]\n", self, why.c_str(), self);
+  std::fprintf(stderr, "%s: %s\nusage: %s N THREADS [GAMMA_MAX] [--packing FILE.xyzr] [--locate TOL]\n", self, why.c_str(), self);
   return 2;
 }
 
@@ -261,7 +301,7 @@ int main(int argc, char **argv)
   const DemCase c = s0_case(*a);
   if (const auto bad = check_input(c))
     return usage(argv[0], *bad);
-  const LoadingProgram program = s0_program(a->gamma_max);
+  const LoadingProgram program = s0_program(a->gamma_max, a->locate);
   const auto start = Clock::now();
   std::printf("geocomp-bench-s0: N=%u threads=%d gamma_max=%g specimen=%s\n", a->particles, a->threads,
               a->gamma_max, a->packing.empty() ? "packing tools (seed 2022)" : a->packing.c_str());

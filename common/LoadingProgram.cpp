@@ -188,6 +188,11 @@ void LoadingProgram::validate() const
       throw ProgramError(w + "/unload to", "expected 'start' or a non-negative tau_max in Pa");
     if (!(s.peak_tolerance > 0.0 && s.peak_tolerance < 1.0))
       throw ProgramError(w + "/peak tolerance", "expected a fraction in (0, 1)");
+    if (s.locate_elastic_limit && s.unload_at.empty())
+      throw ProgramError(w + "/locate elastic limit",
+                         "needs unloading branches ('unload at') whose residuals straddle 1 % to bisect between");
+    if (s.locate_elastic_limit && !(s.elastic_limit_tolerance > 0.0))
+      throw ProgramError(w + "/elastic limit tolerance", "expected a positive strain");
     if (!s.unload_at.empty() && s.has_stress_axis() == false && !s.isochoric) {
       bool any_rate = false;
       for (const auto &a : s.axes)

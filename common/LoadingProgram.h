@@ -14,7 +14,10 @@
 // branches (S0 Fig. 2: A-F ... E-L) are requested per stage: at each trigger the engine
 // state is saved, every kinematic rate is reversed until tau_max returns to the level at
 // the start of the stage (or a given level), the branch is recorded, and the main path
-// resumes from the saved state.
+// resumes from the saved state. A stage may also locate the elastic limit (S0: the strain
+// at which the residual strain after unloading reaches 1 %): after its main path, extra
+// branches bisect the bracket of neighbouring branches whose residuals straddle 1 %
+// (ProgramRunner, docs/metrics.md).
 #include "common/Tensor.h"
 
 #include <array>
@@ -40,6 +43,9 @@ struct AxisDrive {
   static AxisDrive rate(double r) { return {Kind::StrainRate, r}; }
   static AxisDrive stress(double s) { return {Kind::Stress, s}; }
 };
+
+/// S0's elastic limit: the residual strain after unloading (gamma_max) stays below 1 %.
+inline constexpr double s0_residual_threshold = 0.01;
 
 /// Quantities a stop condition or a branch trigger can test.
 enum class Quantity {
@@ -91,6 +97,11 @@ struct Stage {
   bool unload_to_start = true;          ///< unload until tau_max <= value at stage start
   double unload_to_tau = 0.0;           ///< otherwise until tau_max <= this [Pa]
   double peak_tolerance = 0.01;         ///< relative drop that confirms a peak
+  /// After the main path: bisect with unloading branches between the neighbouring branches
+  /// whose residuals straddle s0_residual_threshold, until the bracket of their start
+  /// strains (gamma_max, logarithmic, since the stage start) is narrower than the tolerance.
+  bool locate_elastic_limit = false;
+  double elastic_limit_tolerance = 0.001; ///< bracket width [strain] > 0
 
   bool kinematic(int axis) const { return isochoric || !axes[axis].is_stress(); }
   bool has_stress_axis() const;

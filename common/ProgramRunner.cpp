@@ -1,4 +1,5 @@
 #include "common/ProgramRunner.h"
+#include "common/ElasticLimitBracket.h"
 
 #include <algorithm>
 #include <chrono>
@@ -214,6 +215,10 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
     std::any_of(stage.unload_at.begin(), stage.unload_at.end(),
                 [](const BranchTrigger &b) { return b.kind == BranchTrigger::Kind::AtPeak; });
 
+  limit_states_.clear(); // a resumed stage has none of the states before its checkpoint
+  if (stage.locate_elastic_limit && !from)
+    keep_limit_state(index, stage_start_sample_[index]);
+
   const double t_end = start.time + stage.max_duration;
   std::string reason;
   double t = start.time;
@@ -245,8 +250,11 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
     if (reason.empty() && t >= t_end)
       reason = "max duration";
     record(s, index, 0, reason.empty() ? fraction : 1.0);
+    if (stage.locate_elastic_limit)
+      keep_limit_state(index, response_.samples.size() - 1);
 
     const ResponseSample now = response_.samples.back(); // a copy: branches append samples
+    const std::size_t now_index = response_.samples.size() - 1; // every trigger here leaves from it
     for (std::size_t k = 0; k < stage.unload_at.size(); ++k) {
       if (fired[k])
         continue;
@@ -254,11 +262,11 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
       if (trigger.kind == BranchTrigger::Kind::AtPeak) {
         if (peak_state && evaluate(Quantity::PeakDrop, now, ctx) >= stage.peak_tolerance) {
           fired[k] = true;
-          run_branch(index, control, trigger.text, peak_sample, peak_state.get());
+          run_branch(index, control, {trigger.text, peak_sample, peak_state.get()});
         }
       } else if (holds(trigger.condition, now, ctx)) {
         fired[k] = true;
-        run_branch(index, control, trigger.text, response_.samples.size() - 1, nullptr);
+        run_branch(index, control, {trigger.text, now_index, nullptr});
       }
     }
     if (reason.empty() && checkpoints_.write) {
@@ -280,25 +288,91 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
       }
     }
   }
+  if (stage.locate_elastic_limit)
+    locate_elastic_limit(index, control);
+  limit_states_.clear();
   response_.stage_end_reasons.push_back(reason);
 }
 
-void ProgramRunner::run_branch(int stage_index, const StageControl &main, const std::string &trigger,
-                               std::size_t from_sample, const EngineState *from_state)
+void ProgramRunner::keep_limit_state(int stage_index, std::size_t sample)
+{
+  const ResponseSample &stage_start = response_.samples[stage_start_sample_[stage_index]];
+  const LimitSearch search = search_limit(branch_points(response_, stage_index, stage_start), s0_residual_threshold);
+  // Past the first branch at or above the threshold no state is needed: the crossing lies
+  // before it. Before the last branch below it (and before the first one above) neither.
+  if (!search.upper)
+    limit_states_[sample] = engine_.save();
+  if (search.lower)
+    limit_states_.erase(limit_states_.begin(), limit_states_.lower_bound(search.lower->origin));
+  if (search.upper)
+    limit_states_.erase(limit_states_.upper_bound(search.upper->origin), limit_states_.end());
+}
+
+void ProgramRunner::locate_elastic_limit(int stage_index, const StageControl &main)
+{
+  const Stage &stage = *main.stage;
+  const ResponseSample stage_start = response_.samples[stage_start_sample_[stage_index]];
+  // Each branch lands strictly inside the bracket and becomes one of its ends, so the bracket
+  // shrinks at every step; the cap only guards a stage whose strain stops growing.
+  for (int step = 0; step < 64; ++step) {
+    const LimitSearch search =
+      search_limit(branch_points(response_, stage_index, stage_start), s0_residual_threshold);
+    if (!search.bracketed() || search.width() <= stage.elastic_limit_tolerance)
+      return;
+    const double t_lo = search.lower->time, t_hi = search.upper->time;
+    const double t_mid = 0.5 * (t_lo + t_hi);
+    if (!(t_hi - t_lo > 1e-6 * program_.sample_interval))
+      return; // the strain no longer moves with time
+    BranchStart start{BranchRecord::bisection_trigger, 0, nullptr};
+    double nearest = INFINITY;
+    const EngineState *before = nullptr;
+    std::size_t before_sample = 0;
+    for (const auto &[sample, state] : limit_states_) { // in sample (= main-path time) order
+      const double t = response_.samples[sample].time;
+      if (t > t_lo && t < t_hi && std::abs(t - t_mid) < nearest) {
+        nearest = std::abs(t - t_mid);
+        start.from_sample = sample;
+        start.from_state = state.get();
+      }
+      if (t <= t_mid) {
+        before = state.get();
+        before_sample = sample;
+      }
+    }
+    if (!start.from_state) { // neighbouring samples: run the main path on to the midpoint
+      if (!before)
+        return; // not kept (a run resumed inside the bracket): the bracket stays as it is
+      start.from_sample = before_sample;
+      start.from_state = before;
+      start.leave_at = t_mid;
+    }
+    run_branch(stage_index, main, start);
+  }
+}
+
+void ProgramRunner::run_branch(int stage_index, const StageControl &main, const BranchStart &start)
 {
   const Stage &stage = *main.stage;
   const std::unique_ptr<EngineState> resume = engine_.save();
-  engine_.set_branch(static_cast<int>(response_.branches.size()) + 1);
-  if (from_state)
-    engine_.restore(*from_state);
-  // The sample the branch leaves from: the main-path sample at the saved state.
-  const ResponseSample origin = response_.samples[from_sample];
-
   BranchRecord b;
   b.id = static_cast<int>(response_.branches.size()) + 1;
   branch_ = b.id;
+  engine_.set_branch(b.id);
+  if (start.from_state)
+    engine_.restore(*start.from_state);
+  // The sample the branch leaves from: the main-path sample at the saved state, or the main
+  // path run on from it (as after any branch) to leave_at, recorded as the branch's first.
+  std::size_t from_sample = start.from_sample;
+  if (start.leave_at > response_.samples[from_sample].time) {
+    engine_.begin_control(main);
+    engine_.advance_to(start.leave_at);
+    record(engine_.measure(), stage_index, b.id, 0.0);
+    from_sample = response_.samples.size() - 1;
+  }
+  const ResponseSample origin = response_.samples[from_sample];
+
   b.stage = stage_index;
-  b.trigger = trigger;
+  b.trigger = start.trigger;
   b.first_sample = from_sample;
   b.tau_start = tau_max(origin.stress);
   b.gamma_start = gamma_max(origin.strain);

@@ -7,10 +7,19 @@
 // record the branch and its residual shear strain, restore, go on. "peak" branches
 // leave from the state saved at the running maximum of tau_max, confirmed once tau_max
 // has fallen by the stage's peak tolerance.
+//
+// A stage with `locate elastic limit` keeps the engine state of every main-path sample
+// from the last branch whose residual is below S0's 1 % (ElasticLimitBracket.h) up to the
+// first one at or above it. Once the main path has ended, it bisects that bracket: an
+// unloading branch ("bisection") from the main-path sample nearest the bracket's midpoint
+// strictly inside it, or, once the ends are neighbouring samples, from the main path run
+// on from the earlier sample's state to the midpoint time; the half whose ends still
+// straddle 1 % is kept, until the ends' start strains are closer than the tolerance.
 #include "common/LoadingEngine.h"
 #include "common/ProgramCheckpoint.h"
 
 #include <functional>
+#include <map>
 #include <stdexcept>
 
 namespace geocomp {
@@ -84,8 +93,20 @@ private:
   /// Runs stage `index` from its start, or from `from` (a checkpoint in it).
   void run_stage(int index, const RunnerState *from = nullptr, std::unique_ptr<EngineState> peak = nullptr);
   void maybe_checkpoint(const RunnerState &state, const EngineState *peak);
-  void run_branch(int stage_index, const StageControl &main, const std::string &trigger,
-                  std::size_t from_sample, const EngineState *from_state);
+  /// Where an unloading branch leaves the main path: the main-path sample `from_sample`,
+  /// in the engine state `from_state` (null: the engine's current state); or, when
+  /// `leave_at` is later than that sample, the main path run on from it to `leave_at`.
+  struct BranchStart {
+    std::string trigger;
+    std::size_t from_sample = 0;
+    const EngineState *from_state = nullptr;
+    double leave_at = -1.0;
+  };
+  void run_branch(int stage_index, const StageControl &main, const BranchStart &start);
+  /// Keeps the state of main-path sample `sample` while the stage's bracket is open.
+  void keep_limit_state(int stage_index, std::size_t sample);
+  /// Bisects the stage's bracket with extra branches (after its main path).
+  void locate_elastic_limit(int stage_index, const StageControl &main);
   void record(ResponseSample s, int stage, int branch, double fraction);
   /// Runs `body`; an engine's exception becomes ProgramFailed with the response so far.
   template <class Body> void failing_safely(Body &&body);
@@ -98,6 +119,8 @@ private:
   CheckpointPolicy checkpoints_;
   double last_checkpoint_ = 0.0; ///< steady-clock seconds
   int stage_ = 0, branch_ = 0;  ///< where the run is (for ProgramFailed)
+  /// Main-path states of the stage under way, by sample, kept to locate its elastic limit.
+  std::map<std::size_t, std::unique_ptr<EngineState>> limit_states_;
 };
 
 } // namespace geocomp

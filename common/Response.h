@@ -37,16 +37,22 @@ struct ExtraColumn {
 
 /// One unloading branch: where it left the main path and where it ended.
 struct BranchRecord {
+  /// The trigger of a branch placed by the runner to locate the elastic limit (a case's
+  /// triggers are "peak" or conditions, never this word).
+  static constexpr const char *bisection_trigger = "bisection";
   int id = 0;
   int stage = 0;
   std::string trigger;
-  std::size_t first_sample = 0; ///< index of the main-path sample it starts from
+  /// Index of the main-path sample it starts from; a bisection branch that leaves the main
+  /// path between two samples starts from its own first sample (the main-path state there).
+  std::size_t first_sample = 0;
   std::size_t last_sample = 0;  ///< index of its final sample
   double tau_start = 0.0;       ///< tau_max where the branch left the main path
   double tau_target = 0.0;      ///< level it unloaded to
   double gamma_start = 0.0;     ///< gamma_max there
   double residual_gamma = 0.0;  ///< gamma_max at the end of the branch
   bool reached_target = false;
+  bool bisection() const { return trigger == bisection_trigger; }
 };
 
 struct Response {

@@ -245,10 +245,12 @@ Curve extract_curve(const Response &response, CurveKind kind, int stage, std::op
     std::size_t origin = idx.front();
     bool reached = true;
     bool recorded = false;
+    bool bisection = false;
     for (const auto &b : response.branches)
       if (b.id == id) {
         origin = b.first_sample;
         reached = b.reached_target;
+        bisection = b.bisection();
         recorded = true;
       }
     if (!recorded) // the main-path sample just before the branch
@@ -260,10 +262,13 @@ Curve extract_curve(const Response &response, CurveKind kind, int stage, std::op
     Curve::Branch b;
     b.id = id;
     b.reached_target = reached;
+    b.bisection = bisection;
     std::tie(b.x_start, b.y_start) = xy(samples[origin]);
     b.x.push_back(b.x_start);
     b.y.push_back(b.y_start);
     for (std::size_t i : members) {
+      if (i == origin) // a bisection branch that starts between main-path samples records its origin
+        continue;
       const auto [x, y] = xy(samples[i]);
       b.x.push_back(x);
       b.y.push_back(y);
@@ -378,7 +383,7 @@ MetricSet compute_metrics(const Curve &c, const MetricOptions &o)
   std::vector<BranchResidual> res;
   for (const auto &b : c.branches)
     if (b.reached_target)
-      res.push_back({b.id, b.x_start, b.y_start, b.residual});
+      res.push_back({b.id, b.x_start, b.y_start, b.residual, b.bisection});
     else
       m.notes.push_back("branch " + std::to_string(b.id) + " did not reach its unloading target; ignored");
   std::sort(res.begin(), res.end(), [](const auto &a, const auto &b) { return a.x_start < b.x_start; });
@@ -387,10 +392,19 @@ MetricSet compute_metrics(const Curve &c, const MetricOptions &o)
     m.elastic_limit_method = "unloading residual";
     double xa = c.x.front(), ra = 0.0;
     bool found = false;
-    for (const auto &b : res) {
+    for (std::size_t k = 0; k < res.size(); ++k) {
+      const BranchResidual &b = res[k];
       if (b.residual >= o.residual_threshold) {
         m.elastic_limit_strain = cross(xa, ra, b.x_start, b.residual, o.residual_threshold);
         found = true;
+        if (k > 0) { // the first crossing is bracketed by two branches
+          m.elastic_limit_lower = res[k - 1].x_start;
+          m.elastic_limit_upper = b.x_start;
+          if (res[k - 1].bisection || b.bisection) { // ProgramRunner bisected this bracket
+            m.elastic_limit_method = "located by bisection";
+            m.elastic_limit_strain = 0.5 * (m.elastic_limit_lower + m.elastic_limit_upper);
+          }
+        }
         break;
       }
       xa = b.x_start;

@@ -73,6 +73,7 @@ struct Curve {
     std::vector<double> x, y;             ///< its samples, starting at the main-path point
     double residual = 0.0;                ///< x at its last sample (strain not recovered)
     bool reached_target = false;
+    bool bisection = false;               ///< placed by the runner to locate the elastic limit
   };
   CurveKind kind = CurveKind::ShearIsochoric;
   AxialAxis axial;            ///< the axis of an axial curve
@@ -102,7 +103,7 @@ struct MetricOptions {
   int stage = -1;                      ///< -1: the last stage
   int smoothing_half_window = 2;       ///< centred moving average of y over 2k+1 samples (0: none)
   double initial_fraction = 0.25;      ///< initial-modulus window: y - y0 <= f (peak - y0)
-  double residual_threshold = 0.01;    ///< S0 elastic limit: residual strain after unloading
+  double residual_threshold = s0_residual_threshold; ///< S0 elastic limit: residual strain after unloading
   double linearity_tolerance = 0.02;   ///< no branches: |deviation from the initial line| / (peak - y0)
   int linearity_persistence = 3;       ///< ... exceeded on this many consecutive samples
   double secant_fraction = 0.5;        ///< secant modulus at this fraction of (peak - y0)
@@ -118,6 +119,7 @@ struct MetricOptions {
 struct BranchResidual {
   int id = 0;
   double x_start = 0.0, y_start = 0.0, residual = 0.0;
+  bool bisection = false; ///< placed by the runner to locate the elastic limit (else planned)
 };
 
 /// Metrics of one curve. Strains are fractions, stresses and moduli Pa, angles degrees;
@@ -131,7 +133,11 @@ struct MetricSet {
   double initial_modulus = nan;        ///< dy/dx, least squares over the initial window
   double secant_modulus = nan;         ///< (y - y0)/x at secant_fraction of the peak increment
   double elastic_limit_strain = nan, elastic_limit_stress = nan;
-  std::string elastic_limit_method;    ///< "unloading residual" or "deviation from linearity"
+  std::string elastic_limit_method;    ///< "located by bisection", "unloading residual" or "deviation from linearity"
+  /// Start strains of the neighbouring branches whose residuals straddle the threshold (the
+  /// first crossing); NaN without such a pair. With bisection branches the elastic limit
+  /// strain is their midpoint.
+  double elastic_limit_lower = nan, elastic_limit_upper = nan;
   double peak_strain = nan, peak_stress = nan;
   double softening_modulus = nan;      ///< dy/dx after the peak (negative when softening)
   double residual_stress = nan;

@@ -268,6 +268,69 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
   return pngs;
 }
 
+/// The unloading branches of each curve: the elastic limit's bracket (the neighbouring
+/// branches whose residuals straddle S0's 1 %) and, for every branch, where it started, its
+/// residual and whether it was planned in the case or placed by bisection (ProgramRunner).
+std::string branch_section(const ReportInput &in)
+{
+  std::ostringstream h;
+  bool any = false;
+  for (const auto &m : in.metrics)
+    any = any || !m.metrics.branches.empty();
+  if (!any)
+    return "";
+  h << "<h2>Unloading branches</h2>\n<p>Each branch: the strain at which it left the main path, the stress "
+       "there and its residual strain (what unloading did not recover; the elastic limit is where it reaches "
+       "1 %, S0). Bisection branches were placed by the runner between the neighbouring branches whose "
+       "residuals straddle 1 % (<code>locate elastic limit</code>, docs/metrics.md).</p>\n";
+  for (const auto &nm : in.metrics) {
+    const MetricSet &m = nm.metrics;
+    if (m.branches.empty())
+      continue;
+    const bool shear = m.kind == CurveKind::ShearIsochoric;
+    const std::string e = shear ? "gamma_max" : m.axial.strain_label();
+    const std::string s = shear ? "tau_max" : m.axial.stress_label();
+    const std::string path = "metrics/" + pointer_token(nm.label) + "/";
+    h << "<p><b>" << html_text(nm.label) << "</b>: ";
+    if (std::isfinite(m.elastic_limit_lower))
+      h << "elastic limit bracket " << html_text(e) << " in [" << format_number(m.elastic_limit_lower * 100) << ", "
+        << format_number(m.elastic_limit_upper * 100) << "] % (width "
+        << format_number((m.elastic_limit_upper - m.elastic_limit_lower) * 100) << " %), "
+        << html_text(m.elastic_limit_method) << ".</p>\n";
+    else
+      h << "no two neighbouring branches straddle the 1 % residual: no bracket.</p>\n";
+    h << "<table class=\"branches\"><tr><th>branch</th><th>start " << html_text(e) << " [%]</th><th>start "
+      << html_text(s) << " [MPa]</th><th>residual [%]</th><th>placed</th></tr>\n";
+    for (std::size_t k = 0; k < m.branches.size(); ++k) {
+      const BranchResidual &b = m.branches[k];
+      const std::string at = path + "branches/" + std::to_string(k) + "/";
+      h << "<tr><td>" << b.id << "</td>" << num_cell(b.x_start * 100, at + "start_pct")
+        << num_cell(b.y_start * 1e-6, at + "start_stress_MPa") << num_cell(b.residual * 100, at + "residual_pct")
+        << "<td>" << (b.bisection ? "bisection" : "planned") << "</td></tr>\n";
+    }
+    h << "</table>\n";
+  }
+  return h.str();
+}
+
+/// The same as JSON members of one metric set (after its table's keys).
+std::string branch_json(const MetricSet &m)
+{
+  std::ostringstream j;
+  j << ",\n      \"elastic_limit_lower_pct\": " << format_number(m.elastic_limit_lower * 100)
+    << ",\n      \"elastic_limit_upper_pct\": " << format_number(m.elastic_limit_upper * 100)
+    << ",\n      \"branches\": [";
+  for (std::size_t k = 0; k < m.branches.size(); ++k) {
+    const BranchResidual &b = m.branches[k];
+    j << (k ? "," : "") << "\n        {\"id\": " << b.id << ", \"start_pct\": " << format_number(b.x_start * 100)
+      << ", \"start_stress_MPa\": " << format_number(b.y_start * 1e-6)
+      << ", \"residual_pct\": " << format_number(b.residual * 100)
+      << ", \"placed\": " << json_string(b.bisection ? "bisection" : "planned") << "}";
+  }
+  j << "]";
+  return j.str();
+}
+
 std::string build_html(const ReportInput &in, const std::vector<std::string> &pngs, const std::string &plot_message)
 {
   const CurveKind kind = report_kind(in);
@@ -329,6 +392,7 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
         h << "<li>" << html_text(n) << "</li>";
       h << "</ul>\n";
     }
+    h << branch_section(in);
   }
 
   if (in.verdict) {
@@ -402,8 +466,9 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
   }
   h << "<h2>Definitions</h2>\n<ul>"
        "<li>Initial modulus: least-squares slope over y &minus; y<sub>0</sub> &le; 25 % of the peak rise.</li>"
-       "<li>Elastic limit: where the residual strain after unloading reaches 1 % (S0), interpolated between "
-       "branches; without branches, where the curve leaves the initial line by 2 % of the peak rise.</li>"
+       "<li>Elastic limit: where the residual strain after unloading reaches 1 % (S0): the midpoint of the "
+       "bracket when bisection branches located it, otherwise interpolated between branches; without branches, "
+       "where the curve leaves the initial line by 2 % of the peak rise.</li>"
        "<li>Softening modulus: least-squares slope over 20&ndash;80 % of the drop from peak to residual; "
        "residual: mean over the last 10 % of the post-peak strain.</li>"
        "<li>Dilatancy: sin &psi; = d&epsilon;<sub>v</sub><sup>p</sup>/d&gamma;<sup>p</sup> around the peak; "
@@ -431,6 +496,7 @@ std::string metrics_json(const ReportInput &in)
       << json_string(m.metrics.elastic_limit_method);
     for (const auto &v : metric_table(m.metrics))
       j << ",\n      " << json_string(v.key) << ": " << format_number(v.value);
+    j << branch_json(m.metrics);
     j << ",\n      \"notes\": [";
     for (std::size_t n = 0; n < m.metrics.notes.size(); ++n)
       j << (n ? ", " : "") << json_string(m.metrics.notes[n]);

@@ -8,6 +8,7 @@
 namespace geocomp::sections {
 
 using dealii::Patterns::Anything;
+using dealii::Patterns::Bool;
 using dealii::Patterns::Double;
 using dealii::Patterns::Selection;
 
@@ -79,6 +80,12 @@ void declare_program(dealii::ParameterHandler &prm, unsigned int stages)
                       "Where a branch stops: 'start' (the shear stress at the start of the stage) or a tau_max [Pa].");
     prm.declare_entry("peak tolerance", "0.01", Double(1e-6, 0.5),
                       "Relative drop of tau_max that confirms a peak (for 'peak' branches).");
+    prm.declare_entry("locate elastic limit", "false", Bool(),
+                      "After the main path, bisect between the neighbouring 'unload at' branches whose "
+                      "residual gamma_max straddles S0's 1 % with extra unloading branches, until their "
+                      "start strains are closer than the elastic limit tolerance (docs/metrics.md).");
+    prm.declare_entry("elastic limit tolerance", "0.001", Double(1e-9, 1),
+                      "Width [strain, gamma_max] below which the located elastic limit's bracket stops.");
     prm.leave_subsection();
   }
   prm.leave_subsection();
@@ -123,6 +130,8 @@ LoadingProgram parse_program(dealii::ParameterHandler &prm, unsigned int stages,
       }
     }
     s.peak_tolerance = prm.get_double("peak tolerance");
+    s.locate_elastic_limit = prm.get_bool("locate elastic limit");
+    s.elastic_limit_tolerance = prm.get_double("elastic limit tolerance");
     if (s.isochoric)
       for (int a = 0; a < 3; ++a)
         if (s.axes[a].is_stress() || s.axes[a].value != 0.0)
@@ -162,6 +171,10 @@ std::string program_text(const LoadingProgram &p)
     t("unload at", triggers);
     t("unload to", s.unload_to_start ? std::string("start") : canonical_number(s.unload_to_tau));
     t("peak tolerance", s.peak_tolerance);
+    if (s.locate_elastic_limit) { // written only when used: older cases keep their text
+      t("locate elastic limit", true);
+      t("elastic limit tolerance", s.elastic_limit_tolerance);
+    }
   }
   return t.text();
 }

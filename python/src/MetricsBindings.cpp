@@ -29,6 +29,8 @@ py::dict metrics_dict(const compare::MetricSet &s)
   d["elastic_limit_strain"] = s.elastic_limit_strain;
   d["elastic_limit_stress"] = s.elastic_limit_stress;
   d["elastic_limit_method"] = s.elastic_limit_method;
+  d["elastic_limit_lower"] = s.elastic_limit_lower;
+  d["elastic_limit_upper"] = s.elastic_limit_upper;
   d["peak_strain"] = s.peak_strain;
   d["peak_stress"] = s.peak_stress;
   d["softening_modulus"] = s.softening_modulus;
@@ -41,7 +43,7 @@ py::dict metrics_dict(const compare::MetricSet &s)
   py::list branches;
   for (const compare::BranchResidual &b : s.branches)
     branches.append(py::dict(py::arg("id") = b.id, py::arg("x_start") = b.x_start, py::arg("y_start") = b.y_start,
-                             py::arg("residual") = b.residual));
+                             py::arg("residual") = b.residual, py::arg("bisection") = b.bisection));
   d["branches"] = branches;
   d["notes"] = s.notes;
   return d;

@@ -1,7 +1,7 @@
 // The case reader under hostile input: includes (cycles, depth, devices, balance), size
 // and line bounds, UTF-8, JSON nesting and syntax that .prm cannot carry. Each input is
 // refused with one CaseError naming the file (and the entry or the included file), never
-// a crash, a hang or a read without end.
+// a crash, a hang or a read without end. Also: the program stage's elastic-limit entries.
 #include "compare/case/CaseDescription.h"
 #include "common/case/InputLimits.h"
 #include "tests/common/ScratchFolder.h"
@@ -270,4 +270,24 @@ TEST(CaseLimits, SubsectionsNestedBeyondTheLimitAreRefusedAndReenteringOnesCosts
     wide += "subsection b\nend\n";
   ASSERT_LT(wide.size(), std::size_t(1) << 20);
   EXPECT_EQ(refusal_of_text(wide, "wide.prm").parameter, std::string(8000, 'a'));
+}
+
+// The program stage's `locate elastic limit` (docs/metrics.md): read with its tolerance,
+// written into the canonical parameters only when on (older cases keep their text), and
+// refused without unloading branches, naming the entry.
+TEST(CaseProgram, LocateElasticLimitIsReadWrittenWhenOnAndRefusedWithoutBranches)
+{
+  const std::string stage = "subsection program\n  subsection stage 1\n    set z = rate -1\n"
+                            "    set stop when = eps_zz <= -0.01\n    set max duration = 1\n";
+  const std::string branches = "    set unload at = eps_zz <= -0.002; eps_zz <= -0.008\n";
+  const std::string locate = "    set locate elastic limit = true\n    set elastic limit tolerance = 0.0005\n";
+  const auto on = parse_case(stage + branches + locate + "  end\nend\n", "locate.prm");
+  EXPECT_TRUE(on.program.stages[0].locate_elastic_limit);
+  EXPECT_EQ(on.program.stages[0].elastic_limit_tolerance, 0.0005);
+  EXPECT_NE(geocomp::parameters_text(on).find("locate elastic limit"), std::string::npos);
+  const auto off = parse_case(stage + branches + "  end\nend\n", "plain.prm");
+  EXPECT_FALSE(off.program.stages[0].locate_elastic_limit);
+  EXPECT_EQ(geocomp::parameters_text(off).find("locate elastic limit"), std::string::npos);
+  const CaseError e = refusal_of_text(stage + locate + "  end\nend\n", "no-branches.prm");
+  EXPECT_EQ(e.parameter, "program/stage 1/locate elastic limit");
 }

@@ -151,3 +151,17 @@ TEST(ProgramRunner, UnloadingBranchEndsWhenTheLandingDoesNotConverge)
   // The main path goes on to its end.
   EXPECT_GE(gamma_max(r.path(0).back()->strain), 0.2);
 }
+
+// Two triggers that hold at the same sample both leave from that main-path sample (the
+// second once left from the first branch's last sample, at the unloading target, and never
+// reached it).
+TEST(ProgramRunner, TwoTriggersAtOneSampleBothLeaveFromIt)
+{
+  HystereticShearEngine engine;
+  const Response r = ProgramRunner(shear_program({"gamma_max >= 0.01", "gamma_max >= 0.01"}, 0.05), engine).run();
+  ASSERT_EQ(r.branches.size(), 2u);
+  EXPECT_EQ(r.branches[0].first_sample, r.branches[1].first_sample);
+  EXPECT_EQ(r.samples[r.branches[1].first_sample].branch, 0);
+  EXPECT_EQ(r.branches[0].residual_gamma, r.branches[1].residual_gamma);
+  EXPECT_TRUE(r.branches[1].reached_target);
+}

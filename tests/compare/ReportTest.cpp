@@ -278,8 +278,9 @@ TEST(Report, HtmlNumbersEqualMetricsJsonAndPlotsArePngs)
     EXPECT_EQ(bytes.substr(1, 3), "PNG") << p;
     EXPECT_NE(read(dir / "index.html").find("src=\"" + p + "\""), std::string::npos);
   }
-  // 11 metrics x (2 labels + 1 difference) + predicted (2) + 2 rows x 5.
-  EXPECT_EQ(check_html_against_json(dir), 11 * 3 + 2 + 2 * 5);
+  // 11 metrics x (2 labels + 1 difference) + predicted (2) + 2 rows x 5 + the branch table's
+  // start, start stress and residual of 4 DEM and 3 FE branches.
+  EXPECT_EQ(check_html_against_json(dir), 11 * 3 + 2 + 2 * 5 + 3 * (4 + 3));
   // Spot-check that the JSON holds the metric itself, not just a consistent copy.
   const Json root = JsonReader(read(dir / "metrics.json")).parse();
   const Json *peak = lookup(root, "metrics/continuum~1FE/peak_stress_MPa");
@@ -428,13 +429,13 @@ TEST(Report, WithoutGnuplotTablesAreStillWrittenAtomically)
   EXPECT_NE(out.message.find("gnuplot not found"), std::string::npos);
   EXPECT_NE(read(dir / "index.html").find("gnuplot not found"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "report.gp"));
-  EXPECT_EQ(check_html_against_json(dir), 11 * 3 + 2 + 2 * 5);
+  EXPECT_EQ(check_html_against_json(dir), 11 * 3 + 2 + 2 * 5 + 3 * (4 + 3));
 
   in.metrics.pop_back();
   in.title = "second";
   write_report(in, dir, o);
   EXPECT_NE(read(dir / "index.html").find("<h1>second</h1>"), std::string::npos);
-  EXPECT_EQ(check_html_against_json(dir), 11 + 2 + 2 * 5);
+  EXPECT_EQ(check_html_against_json(dir), 11 + 2 + 2 * 5 + 3 * 4);
   int entries = 0;
   for (const auto &e : fs::directory_iterator(dir.parent_path())) {
     (void)e;

@@ -3,6 +3,7 @@
 // tangent, exact save/restore, and mesh convergence of the regularized post-peak curve.
 #include "EngineTestSupport.h"
 
+#include "common/ElasticLimitBracket.h"
 #include "common/ProgramRunner.h"
 #include "continuum/driver/MaterialPointEngine.h"
 #include "continuum/fe/CubeEngine.h"
@@ -588,4 +589,45 @@ TEST(CubeEngine, KeptAmgHierarchyBuildsRarelyAndGivesTheSameCurve)
   ASSERT_EQ(runs[0.0].samples.size(), runs[1.5].samples.size());
   for (std::size_t k = 0; k < runs[0.0].samples.size(); ++k)
     EXPECT_LT((runs[0.0].samples[k].stress - runs[1.5].samples[k].stress).norm(), 1e-6 * p) << "sample " << k;
+}
+
+// The elastic limit located by bisection (ProgramRunner, docs/metrics.md) on the deal.II
+// cube: its saved states restore the main path for every bisection branch. Hardening
+// Mohr-Coulomb (cohesion rising with the plastic strain, so the residual after unloading
+// grows with the start strain) in triaxial compression: the bracket ends straddle 1 %,
+// it is narrower than the tolerance, and the residuals grow monotonically with the start.
+TEST(CubeEngine, LocatesTheElasticLimitByBisectionFromItsSavedStates)
+{
+  MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(0));
+  m.cohesion = PiecewiseLinear({0.0, 0.2}, {20e3, 100e3});
+  LoadingProgram program = triaxial(0.03);
+  Stage &shear = program.stages[1];
+  shear.unload_at = {parse_trigger("eps_zz <= -0.001", "test"), parse_trigger("eps_zz <= -0.025", "test")};
+  shear.locate_elastic_limit = true;
+  shear.elastic_limit_tolerance = 1e-3;
+  program.validate();
+  CubeEngine engine(small_cube(2), make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
+  const Response r = ProgramRunner(program, engine).run();
+  std::size_t stage_start = 0; // the last sample of the consolidation
+  for (std::size_t k = 0; k < r.samples.size(); ++k)
+    if (r.samples[k].stage == 0 && r.samples[k].branch == 0)
+      stage_start = k;
+  const std::vector<BranchPoint> points = branch_points(r, 1, r.samples[stage_start]);
+  const LimitSearch s = search_limit(points, s0_residual_threshold);
+  ASSERT_TRUE(s.bracketed());
+  EXPECT_LT(s.lower->residual, 0.01);
+  EXPECT_GE(s.upper->residual, 0.01);
+  EXPECT_LE(s.width(), 1e-3);
+  int bisections = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    bisections += points[k].bisection ? 1 : 0;
+    if (k > 0) {
+      EXPECT_GT(points[k].residual, points[k - 1].residual) << "branch " << points[k].id;
+    }
+  }
+  EXPECT_GE(bisections, 3);
+  for (const BranchRecord &b : r.branches)
+    EXPECT_TRUE(b.reached_target) << "branch " << b.id;
+  std::printf("cube bracket [%.4f, %.4f] %%, %d bisection branches\n", 100 * s.lower->x, 100 * s.upper->x,
+              bisections);
 }
