@@ -49,7 +49,6 @@ unsigned int count_stages(const ParameterText &text)
   return n;
 }
 
-
 /// The case text as ParameterHandler reads it: JSON turned into the equivalent .prm, includes
 /// expanded (both syntaxes get the same line-based messages naming the parameter).
 ParameterText case_parameter_text(const std::string &text, const std::string &path)

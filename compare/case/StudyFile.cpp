@@ -7,6 +7,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -123,8 +124,7 @@ StudyCase make_case(const Study &s, const std::string &source, const std::string
   } catch (const CaseError &e) {
     throw CaseError(s.file, "study/against", "case '" + name + "' (from " + source + "): " + e.what());
   }
-  c.label = swept_value.empty() ? (c.description.title.empty() ? name : c.description.title)
-                                : s.parameters.swept_entry + " = " + swept_value;
+  c.label = swept_value.empty() ? s.parameters.against + " = " + x : s.parameters.swept_entry + " = " + swept_value;
   std::size_t used = 0;
   try {
     c.x = std::stod(x, &used);
@@ -166,6 +166,10 @@ void make_cases(Study &s)
       const std::string source = source_path(s, given, "study/cases");
       add(make_case(s, source, fs::path(source).stem().string(), "", "study/cases"));
     }
+    // Cases of a list are labelled by their abscissa, or by their name where two share it.
+    for (StudyCase &c : s.cases)
+      if (std::count_if(s.cases.begin(), s.cases.end(), [&](const StudyCase &o) { return o.x == c.x; }) > 1)
+        c.label = c.name + " (" + c.label + ")";
     return;
   }
   const std::string base = source_path(s, p.base_case, "study/base case");

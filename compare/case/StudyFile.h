@@ -64,7 +64,7 @@ struct StudyParameters {
 /// One case of a study, as the study writes and runs it.
 struct StudyCase {
   std::string name;            ///< folder and file stem, unique in the study
-  std::string label;           ///< legend: "contact/particle friction = 0.27" or the case's title
+  std::string label;           ///< legend: "<against or swept entry> = <value>" (with the name where two share it)
   std::string source;          ///< the case file it comes from (absolute)
   std::string folder;          ///< <output>/cases/<name> (absolute): its results
   std::string file;            ///< <folder>/<name>.prm, the case file the study writes

@@ -122,7 +122,7 @@ TEST(StudyCommand, RunsEverySweptCaseOverTwoRanksAndItsSummaryEqualsEachCaseOwnM
     const std::string name = "point_" + moduli[k], label = "continuum/youngs modulus = " + moduli[k];
     const fs::path folder = s.dir / "out/cases" / name;
     EXPECT_TRUE(fs::exists(folder / (name + ".prm"))) << name;
-    EXPECT_NE(html.find(label), std::string::npos) << label;
+    EXPECT_NE(html.find("<td>" + name + "</td>"), std::string::npos) << name;
     EXPECT_NE(gp.find("'" + label + "'"), std::string::npos) << label;
     const nlohmann::json &c = j["cases"][k];
     EXPECT_EQ(c["name"], name);
@@ -219,9 +219,7 @@ TEST(StudyCommand, ShipsStudiesWhoseEveryCaseIsValid)
   }
   EXPECT_GE(studies, 5u);
   // Fig. 4: the five friction cases, against mu_s = tan phi.
-  const fs::path log = s.dir / "fig4.log";
-  ASSERT_EQ(run("'" + std::string(GEOCOMP_EXE) + "' study --check '" + (root / "cases/studies/s0_fig4.prm").string() +
-                "' > '" + log.string() + "' 2>&1"), 0);
+  const fs::path log = s.dir / "s0_fig4.log";
   for (const char *phi : {"0", "15", "30", "45", "60"})
     EXPECT_NE(read(log).find(std::string("s0_lateral_pressure_phi") + phi + "_n3000: contact/particle friction = "),
               std::string::npos) << read(log);
