@@ -27,6 +27,10 @@ struct CaseDescription : dem::DemCase {
 CaseDescription read_case(const std::string &path);
 /// The same for a case file's text; `path` names it in messages and picks .prm/.json.
 CaseDescription parse_case(const std::string &text, const std::string &path);
+/// The value of one entry of a case's text ('contact/particle friction', 'program/stage 1/z'),
+/// as written or its default: what a study reads as its abscissa. Throws CaseError naming
+/// `path` and `entry` when the text is refused or the entry is not declared.
+std::string case_entry_value(const std::string &text, const std::string &path, const std::string &entry);
 /// Every parameter with default, pattern and help text, as a .prm with comments.
 std::string describe_parameters();
 /// Every entry of every section (the program's as parsed), as canonical text

@@ -48,6 +48,30 @@ unsigned int count_stages(const ParameterText &text)
   }
   return n;
 }
+
+/// The case text as ParameterHandler reads it: JSON turned into the equivalent .prm, includes
+/// expanded (both syntaxes get the same line-based messages naming the parameter).
+ParameterText case_parameter_text(const std::string &text, const std::string &path)
+{
+  const bool json = path.size() >= 5 && path.substr(path.size() - 5) == ".json";
+  const bool prm_file = path.size() >= 4 && path.substr(path.size() - 4) == ".prm";
+  if (!json && !prm_file)
+    throw CaseError(path, "(file)", "expected a case file ending in .prm or .json");
+  check_utf8_text(text, path);
+  return expand_parameter_text(json ? json_to_prm(text, path) : text, path);
+}
+
+/// Declares every section (with the program's stages) into `prm` and parses `prm_text`;
+/// returns the number of stages the text has.
+unsigned int declare_and_parse(ParameterHandler &prm, const ParameterText &prm_text, const std::string &path)
+{
+  const unsigned int stages = count_stages(prm_text);
+  if (stages > 200)
+    throw CaseError(path, "program", "more than 200 stages: expected a smaller program");
+  declare_all(prm, std::max(stages, 1u));
+  parse_parameter_text(prm, prm_text, path);
+  return stages;
+}
 } // namespace
 
 CaseDescription read_case(const std::string &path)
@@ -55,28 +79,37 @@ CaseDescription read_case(const std::string &path)
   return parse_case(read_parameter_file(path, ".prm or .json case file"), path);
 }
 
+std::string case_entry_value(const std::string &text, const std::string &path, const std::string &entry)
+{
+  const ParameterText prm_text = case_parameter_text(text, path);
+  ParameterHandler prm;
+  declare_and_parse(prm, prm_text, path);
+  // The declared tree as JSON (names as declared): an entry is a node with a "value".
+  std::ostringstream json;
+  prm.print_parameters(json, ParameterHandler::OutputStyle::JSON);
+  nlohmann::json node = nlohmann::json::parse(json.str());
+  std::stringstream ss(entry);
+  for (std::string name; std::getline(ss, name, '/');) {
+    if (!node.is_object() || !node.contains(name)) {
+      node = nullptr;
+      break;
+    }
+    node = nlohmann::json(node[name]);
+  }
+  if (!node.is_object() || !node.contains("value") || !node["value"].is_string())
+    throw CaseError(path, entry,
+                    "not an entry of a case file: expected 'section/entry' as `geocomp print-parameters` lists them");
+  return node["value"].get<std::string>();
+}
+
 CaseDescription parse_case(const std::string &text, const std::string &path)
 {
   CaseDescription c;
   c.file = path;
   c.text = text;
-  const bool json = path.size() >= 5 && path.substr(path.size() - 5) == ".json";
-  const bool prm_file = path.size() >= 4 && path.substr(path.size() - 4) == ".prm";
-  if (!json && !prm_file)
-    throw CaseError(path, "(file)", "expected a case file ending in .prm or .json");
-  check_utf8_text(c.text, path);
-
-  // JSON is handed to ParameterHandler as the equivalent .prm, so both syntaxes get the
-  // same line-based messages naming the parameter; a .prm has its includes expanded.
-  const ParameterText prm_text = expand_parameter_text(json ? json_to_prm(c.text, path) : c.text, path);
-
-  const unsigned int stages = count_stages(prm_text);
-  if (stages > 200)
-    throw CaseError(path, "program", "more than 200 stages: expected a smaller program");
-
+  const ParameterText prm_text = case_parameter_text(c.text, path);
   ParameterHandler prm;
-  declare_all(prm, std::max(stages, 1u));
-  parse_parameter_text(prm, prm_text, path);
+  const unsigned int stages = declare_and_parse(prm, prm_text, path);
   if (stages == 0)
     throw CaseError(path, "program/stage 1",
                     "the loading program has no stage: expected 'subsection stage 1' in 'subsection program'");

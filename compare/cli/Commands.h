@@ -48,6 +48,7 @@ Command report_command();
 Command compare_command();
 Command calibrate_command();
 Command sweep_command();
+Command study_command();
 Command pack_command();
 Command export_command();
 Command import_command();

@@ -19,8 +19,7 @@ namespace geocomp::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-std::string label_of(const std::string &engine)
+std::string engine_label(const std::string &engine)
 {
   if (engine == "dem")
     return "DEM";
@@ -28,6 +27,8 @@ std::string label_of(const std::string &engine)
     return "FE cube";
   return "material point";
 }
+
+namespace {
 
 /// The DEM's band over this pair's DEM run and the results files of calibration/scatter (the
 /// same program on other specimens), each continuum engine judged against it (compare/Scatter.h).
@@ -37,7 +38,7 @@ compare::ScatterTable specimen_scatter(const CaseDescription &c, const std::vect
   std::vector<std::string> names, engines;
   std::vector<compare::MetricSet> specimens, judged;
   for (const auto &m : metrics) {
-    const bool dem = m.label == label_of("dem");
+    const bool dem = m.label == engine_label("dem");
     (dem ? specimens : judged).push_back(m.metrics);
     (dem ? names : engines).push_back(dem ? results_file("dem") : m.label);
   }
@@ -64,14 +65,14 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
     // continuum's samples are its states), and the report says so.
     const Response response = with_interval_means(instantaneous);
     if (instantaneous.interval_means)
-      in.notes.push_back(label_of(engine) + ": stresses in the curves, tables and metrics are means over each "
+      in.notes.push_back(engine_label(engine) + ": stresses in the curves, tables and metrics are means over each "
                          "sampling interval (the instantaneous samples are /response/stress of " +
                          results_file(engine) + ").");
-    in.responses.push_back({label_of(engine), response});
+    in.responses.push_back({engine_label(engine), response});
     try {
-      in.metrics.push_back({label_of(engine), compare::compute_metrics(response, options)});
+      in.metrics.push_back({engine_label(engine), compare::compute_metrics(response, options)});
     } catch (const std::exception &e) {
-      in.notes.push_back(label_of(engine) + ": metrics not computed: " + e.what());
+      in.notes.push_back(engine_label(engine) + ": metrics not computed: " + e.what());
     }
   }
   if (!c.calibration.scatter.empty())
@@ -84,7 +85,7 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
       point = &response;
     if (engine != "dem")
       onsets.push_back(
-        compare::acoustic_tensor_onset(response, label_of(engine) + " (acoustic tensor)", in.kind, -1, in.axial));
+        compare::acoustic_tensor_onset(response, engine_label(engine) + " (acoustic tensor)", in.kind, -1, in.axial));
     else
       add_dem_fields(in, dir, onsets);
     if (engine == "continuum")

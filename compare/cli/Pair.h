@@ -18,6 +18,9 @@ namespace geocomp::cli {
 /// Engine name and its Response, in the order `pair` runs them (engine_names()).
 using EngineRuns = std::vector<std::pair<std::string, Response>>;
 
+/// An engine's name in reports and tables: "DEM", "FE cube", "material point".
+std::string engine_label(const std::string &engine);
+
 /// The comparison of `runs` of case `c` whose files are in `dir` (snapshots, mid-plane,
 /// calibration table): what the report and metrics.json show.
 compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &runs, const std::filesystem::path &dir);

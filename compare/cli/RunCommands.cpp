@@ -8,12 +8,14 @@
 #include "Mpi.h"
 #include "OutputFolderLock.h"
 #include "Pair.h"
+#include "PairOverRanks.h"
 
 #include "common/ResponseFile.h"
 #include "compare/Metrics.h"
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -178,26 +180,32 @@ Command sweep_command()
       return static_cast<int>(bad_input);
     }
     ensure_mpi();
-    int world_rank = 0, world_size = 1;
-    MPI_Comm_rank(MPI_COMM_WORLD, &world_rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &world_size);
-    engine_comm = MPI_COMM_SELF;
-    int failures = 0;
-    for (std::size_t k = world_rank; k < cases.size(); k += world_size) {
-      const int code = guarded([&] {
-        const OutputFolderLock lock(cases[k].output.directory, cases[k].file, "output/directory");
-        return pair_exit_code(cases[k], cases[k].output.directory, !a.has("force"));
-      });
-      log::info("sweep: rank " + std::to_string(world_rank) + " case " + cases[k].file + ": " +
-                (code == ok ? "done" : "FAILED") + " -> " + cases[k].output.directory);
-      failures += code != ok;
-    }
-    engine_comm = MPI_COMM_WORLD;
-    int total = 0;
-    MPI_Allreduce(&failures, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
-    return total == 0 ? static_cast<int>(ok) : static_cast<int>(run_failure);
+    const std::vector<int> codes = pair_over_ranks(cases, !a.has("force"), "sweep");
+    return std::all_of(codes.begin(), codes.end(), [](int code) { return code == ok; }) ? static_cast<int>(ok)
+                                                                                        : static_cast<int>(run_failure);
   };
   return c;
+}
+
+std::vector<int> pair_over_ranks(const std::vector<CaseDescription> &cases, bool reuse, const std::string &command)
+{
+  int world_rank = 0, world_size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &world_rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &world_size);
+  engine_comm = MPI_COMM_SELF;
+  std::vector<int> codes(cases.size(), ok);
+  for (std::size_t k = world_rank; k < cases.size(); k += world_size) {
+    codes[k] = guarded([&] {
+      const OutputFolderLock lock(cases[k].output.directory, cases[k].file, "output/directory");
+      return pair_exit_code(cases[k], cases[k].output.directory, reuse);
+    });
+    log::info(command + ": rank " + std::to_string(world_rank) + " case " + cases[k].file + ": " +
+              (codes[k] == ok ? "done" : "FAILED") + " -> " + cases[k].output.directory);
+  }
+  engine_comm = MPI_COMM_WORLD;
+  std::vector<int> all(cases.size(), ok);
+  MPI_Allreduce(codes.data(), all.data(), static_cast<int>(codes.size()), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return all;
 }
 
 /// The results of the case's engines found in `dir` (nothing is run).
