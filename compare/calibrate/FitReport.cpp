@@ -21,13 +21,13 @@ namespace fs = std::filesystem;
 
 namespace {
 using compare::html_text;
+using compare::json_string;
 
 /// What the report shows beside the fit: the FE-cube verification, the model ladder.
 struct FitEvidence {
   const std::vector<Verification> &verification;
   const std::vector<compare::LadderRung> &ladder;
 };
-using compare::json_string;
 
 std::string num(double v, int digits = 10)
 {
