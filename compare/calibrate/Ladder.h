@@ -16,7 +16,8 @@
 //    free E, nu (as the case frees them), sigma_y (for c), alpha = 3 omega (for phi),
 //    Lambda (for psi) and sigma_c, which sets the hardening H with eps_p* held at 1 % (H
 //    depends on (sigma_c - sigma_y)/eps_p* only: freeing both would be unidentifiable). It
-//    starts from the constant rung's fit mapped onto the compression (outer) cone,
+//    starts from the constant rung's fit (its start when that rung is not in the ladder or
+//    fails) mapped onto the compression (outer) cone,
 //      omega = 2 sin phi / (sqrt3 (3 - sin phi)),  Y0 = 6 c cos phi / (sqrt3 (3 - sin phi)),
 //      sigma_y = Y0 / (1/sqrt3 - omega),  Lambda = 6 sin psi / (sqrt3 (3 - sin psi)),
 //    sigma_y at least 1e-3 of the targets' largest q (the model needs sigma_y > 0) and
