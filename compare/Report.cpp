@@ -464,6 +464,7 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
     }
     h << "</table>\n";
   }
+  h << ladder_html(in.ladder);
   h << "<h2>Definitions</h2>\n<ul>"
        "<li>Initial modulus: least-squares slope over y &minus; y<sub>0</sub> &le; 25 % of the peak rise.</li>"
        "<li>Elastic limit: where the residual strain after unloading reaches 1 % (S0): the midpoint of the "
@@ -544,6 +545,8 @@ std::string metrics_json(const ReportInput &in)
       << ", \"rms_eps_v\": " << format_number(c.rms_eps_v) << "}";
   }
   j << (in.calibration_curves.empty() ? "]" : "\n  ]");
+  if (!in.ladder.empty())
+    j << ",\n  \"ladder\": " << ladder_json(in.ladder, "  ");
   if (in.scatter) {
     const ScatterTable &t = *in.scatter;
     j << ",\n  \"scatter\": {\n    \"specimens\": [";

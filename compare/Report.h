@@ -14,6 +14,7 @@
 // Units in the report: MPa, %, degrees; the lateral-pressure curve is compression positive.
 #include "compare/Localization.h"
 #include "compare/Metrics.h"
+#include "compare/ModelLadder.h"
 #include "compare/Scatter.h"
 #include "compare/Verdict.h"
 
@@ -58,6 +59,8 @@ struct ReportInput {
   std::vector<CalibrationCurve> calibration_curves;
   /// The DEM's specimen-to-specimen scatter and each continuum engine's verdict (Scatter.h).
   std::optional<ScatterTable> scatter;
+  /// The model ladder of a calibrated pair (ModelLadder.h); empty: none asked for.
+  std::vector<LadderRung> ladder;
   std::vector<std::string> notes;
 };
 

@@ -24,6 +24,15 @@ struct FittedQuantity {
   double weight = 1.0;
 };
 
+/// The rungs of the model ladder (calibration/ladder, compare/calibrate/Ladder.h), in the
+/// order of their number of parameters on a case with tables.
+inline const std::vector<std::string> &ladder_rung_names()
+{
+  static const std::vector<std::string> names{"mohr-coulomb constant", "mohr-coulomb tables", "drucker-prager",
+                                              "nikolaevsky"};
+  return names;
+}
+
 /// What `geocomp calibrate` fits (docs/calibration.md).
 struct CalibrationParameters {
   std::vector<std::string> targets;     ///< results files (.h5) of the curves to fit, e.g. DEM runs
@@ -42,6 +51,9 @@ struct CalibrationParameters {
   std::string pair_dem = "fitted";
   /// Results files of the pair's program on other specimens: the DEM's scatter band in the report.
   std::vector<std::string> scatter;
+  /// The model ladder: each rung (ladder_rung_names()) fitted to the same curves, with its
+  /// residual and information criteria; empty: none.
+  std::vector<std::string> ladder;
 
   /// Every entry, written as the case file gives it (bounds as `name:lower:upper`,
   /// quantities as `name:weight`); read-only (the lists are rebuilt for writing).
@@ -63,6 +75,7 @@ struct CalibrationParameters {
     v("pair continuum", p.pair_continuum);
     v("pair dem", p.pair_dem);
     v("scatter", p.scatter);
+    v("ladder", p.ladder);
     v("output file", p.output_file);
   }
 };

@@ -54,6 +54,13 @@ void declare_calibration(dealii::ParameterHandler &prm)
                     "Comma-separated results files of the pair's program run on other specimens (seeds, store "
                     "variants): with the pair's own DEM run they give each metric's specimen-to-specimen band, "
                     "and `pair`'s report says whether each continuum engine's value lies within it.");
+  prm.declare_entry("ladder", "", Anything(),
+                    "Comma-separated model ladder: each rung fitted to the same curves as the calibration, with "
+                    "its number of parameters, residual, AIC and BIC (and the held-out curve's error in a pair "
+                    "with pair dem = held out): mohr-coulomb constant (E, nu, c, phi, psi each one value), "
+                    "mohr-coulomb tables (the free parameters above on the continuum's tables), drucker-prager "
+                    "(the same, behind the Drucker-Prager matching), nikolaevsky (S1's quasi-static model: E, nu, "
+                    "sigma_y, sigma_c, alpha, Lambda). Empty: no ladder.");
   prm.declare_entry("output file", "calibrated.prm", Anything(),
                     "The calibrated 'subsection continuum' fragment, written to <output directory>/calibration/; "
                     "case files pull it in with 'include <path>'.");
@@ -77,7 +84,17 @@ CalibrationParameters parse_calibration(dealii::ParameterHandler &prm, const Rea
   p.pair_continuum = prm.get("pair continuum");
   p.pair_dem = prm.get("pair dem");
   p.scatter = dealii::Utilities::split_string_list(prm.get("scatter"));
+  p.ladder = dealii::Utilities::split_string_list(prm.get("ladder"));
   prm.leave_subsection();
+
+  const std::vector<std::string> &rungs = ladder_rung_names();
+  for (std::size_t k = 0; k < p.ladder.size(); ++k) {
+    if (std::find(rungs.begin(), rungs.end(), p.ladder[k]) == rungs.end())
+      r.fail("calibration/ladder", "'" + p.ladder[k] + "' is not a rung of the model ladder (expected " +
+                                     "mohr-coulomb constant, mohr-coulomb tables, drucker-prager or nikolaevsky)");
+    if (std::find(p.ladder.begin(), p.ladder.begin() + long(k), p.ladder[k]) != p.ladder.begin() + long(k))
+      r.fail("calibration/ladder", "'" + p.ladder[k] + "' is named twice: expected each rung once");
+  }
 
   for (const auto &w : weights) {
     char *end = nullptr;

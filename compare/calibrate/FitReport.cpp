@@ -23,6 +23,12 @@ namespace {
 using compare::html_text;
 using compare::json_string;
 
+/// What the report shows beside the fit: the FE-cube verification, the model ladder.
+struct FitEvidence {
+  const std::vector<Verification> &verification;
+  const std::vector<compare::LadderRung> &ladder;
+};
+
 std::string num(double v, int digits = 10)
 {
   if (!std::isfinite(v))
@@ -65,8 +71,9 @@ std::string fitted_names(const CalibrationResult &r)
 
 /// fit.json: everything in the HTML tables, machine-readable.
 std::string fit_json(const CalibrationResult &r, const std::vector<FitTarget> &targets, const std::string &case_file,
-                     const std::vector<Verification> &verification)
+                     const FitEvidence &evidence)
 {
+  const std::vector<Verification> &verification = evidence.verification;
   const std::size_t n = r.parameters.size();
   std::ostringstream json;
   json << "{\n  \"format\": \"geocomp-calibration-2\",\n  \"case\": " << json_string(case_file) << ",\n"
@@ -118,7 +125,7 @@ std::string fit_json(const CalibrationResult &r, const std::vector<FitTarget> &t
   json << "],\n  \"notes\": [";
   for (std::size_t k = 0; k < r.notes.size(); ++k)
     json << (k ? ", " : "") << json_string(r.notes[k]);
-  json << "]\n}\n";
+  json << "],\n  \"ladder\": " << compare::ladder_json(evidence.ladder, "  ") << "\n}\n";
   return json.str();
 }
 
@@ -187,8 +194,9 @@ bool write_plots(const fs::path &dir, const CalibrationResult &r, const std::vec
 }
 
 std::string fit_html(const CalibrationResult &r, const std::vector<FitTarget> &targets, const std::string &case_file,
-                     const std::string &fragment_name, const std::vector<Verification> &verification, bool plots)
+                     const std::string &fragment_name, const FitEvidence &evidence, bool plots)
 {
+  const std::vector<Verification> &verification = evidence.verification;
   const std::size_t n = r.parameters.size();
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Calibration: " << html_text(case_file)
@@ -251,7 +259,7 @@ std::string fit_html(const CalibrationResult &r, const std::vector<FitTarget> &t
            << num(v.seconds, 3) << "</td></tr>\n";
     html << "</table>\n";
   }
-  html << "<h2>Curves</h2>\n";
+  html << compare::ladder_html(evidence.ladder) << "<h2>Curves</h2>\n";
   if (plots)
     for (std::size_t k = 0; k < targets.size(); ++k)
       html << "<img src=\"fit" << k << ".png\" alt=\"fit " << k << "\"><img src=\"residuals" << k
@@ -268,7 +276,7 @@ std::string fit_html(const CalibrationResult &r, const std::vector<FitTarget> &t
 
 void write_folder(const fs::path &dir, const std::string &fragment_name, const CalibrationResult &r,
                   const std::vector<FitTarget> &targets, const std::string &case_file,
-                  const std::vector<Verification> &verification)
+                  const FitEvidence &evidence)
 {
   write_text(dir / fragment_name, calibrated_fragment(r, fragment_comment(case_file, targets.size())));
   std::ostringstream tsv;
@@ -279,9 +287,9 @@ void write_folder(const fs::path &dir, const std::string &fragment_name, const C
   for (const FixedParameter &f : r.fixed)
     tsv << f.name << '\t' << num(f.value) << '\t' << num(f.value) << "\tfixed\n";
   write_text(dir / "parameters.tsv", tsv.str());
-  write_text(dir / "fit.json", fit_json(r, targets, case_file, verification));
+  write_text(dir / "fit.json", fit_json(r, targets, case_file, evidence));
   const bool plots = write_plots(dir, r, targets);
-  write_text(dir / "index.html", fit_html(r, targets, case_file, fragment_name, verification, plots));
+  write_text(dir / "index.html", fit_html(r, targets, case_file, fragment_name, evidence, plots));
 }
 } // namespace
 
@@ -347,12 +355,13 @@ std::string calibrated_fragment(const CalibrationResult &r, const std::string &c
 
 void write_fit_report(const fs::path &dir, const std::string &fragment_name, const CalibrationResult &r,
                       const std::vector<FitTarget> &targets, const std::string &case_file,
-                      const std::vector<Verification> &verification)
+                      const std::vector<Verification> &verification,
+                      const std::vector<compare::LadderRung> &ladder)
 {
   write_atomically(dir, [&](const fs::path &tmp) {
     try {
       fs::create_directories(tmp);
-      write_folder(tmp, fragment_name, r, targets, case_file, verification);
+      write_folder(tmp, fragment_name, r, targets, case_file, FitEvidence{verification, ladder});
       fs::remove_all(dir); // the previous report, replaced as a whole
     } catch (...) {
       std::error_code ec;

@@ -8,11 +8,13 @@
 //                     files pull in with deal.II's `include <path>`)
 //   parameters.tsv    name, start, value, standard error (read by the comparison report)
 //   fit.json          values, standard errors, correlations, costs, per-target residuals
-//                     (rms and max of q, p, eps_v), the FE-cube verification if run
+//                     (rms and max of q, p, eps_v), the FE-cube verification if run, the
+//                     model ladder if asked for (compare/ModelLadder.h)
 //   index.html        the same as tables, with fit_k.png (target and fitted curves) and
 //                     residuals_k.png (residual of each quantity along each curve), gnuplot
 #pragma once
 
+#include "compare/ModelLadder.h"
 #include "compare/calibrate/Calibration.h"
 
 #include <filesystem>
@@ -44,7 +46,8 @@ std::string fragment_comment(const std::string &case_file, std::size_t targets);
 
 void write_fit_report(const std::filesystem::path &dir, const std::string &fragment_name,
                       const CalibrationResult &result, const std::vector<FitTarget> &targets,
-                      const std::string &case_file, const std::vector<Verification> &verification = {});
+                      const std::string &case_file, const std::vector<Verification> &verification = {},
+                      const std::vector<compare::LadderRung> &ladder = {});
 
 /// (name, "value +- standard error") rows of <dir>/parameters.tsv; empty if absent.
 std::vector<std::pair<std::string, std::string>> read_parameter_table(const std::filesystem::path &dir);

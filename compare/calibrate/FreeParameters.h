@@ -4,6 +4,11 @@
 // E, nu and the knot values of the piecewise-linear tables c(kappa), phi(kappa),
 // psi(kappa) (the knots' kappa stay fixed) - and Ceres sees them as one vector. This class
 // is the map between the two, with the bounds in case-file units (Pa, degrees).
+// The model ladder (Ladder.h) also fits S1's Nikolaevsky model: on a section with
+// model = nikolaevsky (material custom), E and nu are those of its nikolaevsky subsection,
+// and four more families free its yield stress sigma_y, compressive strength sigma_c (the
+// hardening, with eps_p* fixed), internal friction alpha and dilatancy Lambda. They are not
+// names a case file's `free parameters` accepts (`calibrate` fits Mohr-Coulomb sections).
 #pragma once
 
 #include "compare/case/CaseDescription.h"
@@ -22,8 +27,8 @@ struct CalibrationError : std::runtime_error {
 };
 
 struct FreeParameter {
-  enum class Family { E, Nu, Cohesion, Friction, Dilatancy };
-  std::string name;     ///< "E", "nu", "friction[1]", ...
+  enum class Family { E, Nu, Cohesion, Friction, Dilatancy, YieldStress, CompressiveStrength, InternalFriction, Lambda };
+  std::string name;     ///< "E", "nu", "friction[1]", "yield stress", ...
   Family family = Family::E;
   int knot = -1;        ///< table knot for Cohesion/Friction/Dilatancy
   double lower = 0.0, upper = 0.0;
@@ -32,7 +37,7 @@ struct FreeParameter {
 class FreeParameters {
 public:
   /// The free parameters `c` names, on the tables of `base` (throws CalibrationError for a
-  /// knot that the table does not have).
+  /// knot that the table does not have, or for a Nikolaevsky parameter on another model).
   FreeParameters(const ContinuumParameters &base, const CalibrationParameters &c);
 
   /// Every parameter a calibration of `p` can free: E, nu and each knot of the tables.

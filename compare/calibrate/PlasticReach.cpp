@@ -30,8 +30,9 @@ std::vector<std::string> unconstrained_strength(const std::vector<FreeParameter>
         kappa_max = std::max(kappa_max, s->extras[std::size_t(k)]);
   }
   for (const FreeParameter &p : free) {
-    if (p.family == FreeParameter::Family::E || p.family == FreeParameter::Family::Nu)
-      continue;
+    using Family = FreeParameter::Family;
+    if (p.family != Family::Cohesion && p.family != Family::Friction && p.family != Family::Dilatancy)
+      continue; // not a table knot (E, nu, the Nikolaevsky model's numbers)
     const auto &knots = table_of(calibrated, p.family).points;
     const std::size_t k = std::size_t(p.knot);
     const double lower = k == 0 ? -std::numeric_limits<double>::infinity() : knots[k - 1].first;

@@ -12,6 +12,7 @@
 #include "common/ProgramRunner.h"
 #include "compare/calibrate/Calibration.h"
 #include "compare/calibrate/FitReport.h"
+#include "compare/calibrate/Ladder.h"
 #include "compare/calibrate/StartingValues.h"
 
 #include <mpi.h>
@@ -78,7 +79,8 @@ Command calibrate_command()
               "(include it in case files), parameters.tsv, fit.json, index.html with the curves,\n"
               "standard errors, correlations and residuals. --verify reruns the calibrated model on\n"
               "the FE cube for each target's program and adds the differences from the material-point\n"
-              "fit and from the target to the report.\n"
+              "fit and from the target to the report. calibration/ladder fits each rung of the model\n"
+              "ladder to the same curves and adds its residual, AIC and BIC (\"Model ladder\").\n"
               "A parameter the targets cannot identify is named and the command exits with 2.\n";
   cmd.run = [](const std::vector<std::string> &args) {
     const Arguments a = Arguments::parse(args, {"output"}, {"verify"});
@@ -140,7 +142,12 @@ Command calibrate_command()
           std::cout << "  " << v.target << ": cube vs material point " << v.cube_vs_point << ", cube vs target "
                     << v.cube_vs_target << ", material point vs target " << v.point_vs_target << "\n";
       }
-      write_fit_report(dir, c.calibration.output_file, r, targets, c.file, verification);
+      std::vector<compare::LadderRung> ladder;
+      if (!c.calibration.ladder.empty()) {
+        ladder = run_ladder({&c.continuum, &targets, &c.calibration, nullptr});
+        std::cout << ladder_summary(ladder);
+      }
+      write_fit_report(dir, c.calibration.output_file, r, targets, c.file, verification, ladder);
       std::cout << "calibrated section: " << (dir / c.calibration.output_file).string() << "\nreport: "
                 << (dir / "index.html").string() << "\n";
       return static_cast<int>(ok);

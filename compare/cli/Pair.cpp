@@ -121,6 +121,7 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
   if (calibrated) {
     const auto dem = std::find_if(runs.begin(), runs.end(), [](const auto &r) { return r.first == "dem"; });
     in.calibration_curves = calibration_curves(c, *calibrated, dem == runs.end() ? nullptr : &dem->second, dir);
+    in.ladder = calibration_ladder(dir);
   }
   if (point && c.continuum.model == "nikolaevsky") {
     in.notes.push_back("No Rudnicki-Rice prediction: it is computed from the Mohr-Coulomb parameters, and the "

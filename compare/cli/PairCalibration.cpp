@@ -7,6 +7,7 @@
 #include "common/case/JsonCase.h"
 #include "common/case/ParseParameters.h"
 #include "compare/calibrate/FitReport.h"
+#include "compare/calibrate/Ladder.h"
 #include "compare/calibrate/StartingValues.h"
 
 #include <nlohmann/json.hpp>
@@ -122,11 +123,21 @@ CaseDescription calibrate_for_pair(const CaseDescription &c, const Response *dem
     CalibrationResult r = calibrate(start.parameters, targets, c.calibration);
     r.notes.insert(r.notes.begin(), start.notes.begin(), start.notes.end());
     const std::string fragment = calibrated_fragment(r, fragment_comment(c.file, targets.size())); // as written
+    std::vector<compare::LadderRung> ladder;
+    if (!c.calibration.ladder.empty() && rank_in(comm) == 0) {
+      // With the DEM run held out, each rung predicts it as the calibration does.
+      std::optional<FitTarget> held_out;
+      if (dem && c.calibration.pair_dem == "held out")
+        held_out = make_target((dir / results_file("dem")).string(), *dem, c.program, -c.specimen.isotropic_pressure,
+                               c.continuum.point_substeps, 1.0);
+      ladder = run_ladder({&c.continuum, &targets, &c.calibration, held_out ? &*held_out : nullptr});
+    }
     if (rank_in(comm) == 0) {
-      log::info(calibration_summary(r) + "calibrated section: " + fragment_path(c, dir).string());
+      log::info(calibration_summary(r) + "calibrated section: " + fragment_path(c, dir).string() +
+                (ladder.empty() ? "" : "\n" + ladder_summary(ladder)));
       for (const auto &w : r.warnings)
         log::warning(c.file + ": calibration/free parameters: " + w);
-      write_fit_report(dir / "calibration", c.calibration.output_file, r, targets, c.file);
+      write_fit_report(dir / "calibration", c.calibration.output_file, r, targets, c.file, {}, ladder);
     }
     return with_calibrated_continuum(c, fragment);
   } catch (const CalibrationError &e) {
@@ -165,6 +176,14 @@ std::vector<compare::CalibrationCurve> calibration_curves(const CaseDescription 
     out.push_back(row(target.name, "predicted", summarize_residuals(target, predicted, fitted_quantities(c.calibration))));
   }
   return out;
+}
+
+std::vector<compare::LadderRung> calibration_ladder(const fs::path &dir)
+{
+  const fs::path fit = dir / "calibration" / "fit.json";
+  if (!fs::is_regular_file(fit))
+    return {};
+  return compare::ladder_from_fit_json(read_parameter_file(fit.string(), "fit report (fit.json)"));
 }
 
 std::optional<CaseDescription> calibrated_case_in(const CaseDescription &c, const fs::path &dir)

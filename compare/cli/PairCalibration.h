@@ -16,6 +16,7 @@
 // out the DEM run is left out of the fit: the continuum predicts the pair's program from the
 // targets alone (a hold-out test), and the report says which curves were calibrated on and
 // which was predicted.
+#include "compare/ModelLadder.h"
 #include "compare/Report.h"
 #include "compare/calibrate/Calibration.h"
 #include "compare/case/CaseDescription.h"
@@ -60,6 +61,9 @@ CaseDescription calibrate_for_pair(const CaseDescription &c, const Response *dem
 /// with the `calibrated` case's section (its program's main path).
 std::vector<compare::CalibrationCurve> calibration_curves(const CaseDescription &c, const CaseDescription &calibrated,
                                                          const Response *dem, const std::filesystem::path &dir);
+
+/// The model ladder of <dir>/calibration/fit.json (calibration/ladder; empty without one).
+std::vector<compare::LadderRung> calibration_ladder(const std::filesystem::path &dir);
 
 /// The calibrated case of an earlier calibrated pair in `dir` (its section read back from
 /// <dir>/calibration), none when the case is not calibrated or the section is missing.

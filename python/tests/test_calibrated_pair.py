@@ -2,7 +2,8 @@
 point with known parameters, given as the targets, are recovered by `geocomp pair` to 1e-6;
 the material point then runs the calibrated section and reproduces the target's curve; its
 results store that section; a second pair reuses them; the report judges it "within scatter"
-of the target for every metric, and a continuum with a lower peak friction "outside";
+of the target for every metric, and a continuum with a lower peak friction "outside"; its
+model ladder (constant against tables) is in the fit report and the pair's report alike;
 inconsistent cases are refused."""
 import os
 import pathlib
@@ -65,7 +66,8 @@ class ACalibratedPair(unittest.TestCase):
         cls.calibration = ("subsection calibration\n  set targets = " + ", ".join(cls.targets) + "\n"
                            f"  set scatter = {cls.targets[1]}\n"
                            "  set free parameters = E, nu, cohesion, friction[1], dilatancy[1]\n"
-                           "  set starting values = case\n  set pair continuum = calibrated\nend\n")
+                           "  set starting values = case\n  set pair continuum = calibrated\n"
+                           "  set ladder = mohr-coulomb constant, mohr-coulomb tables\nend\n")
         cls.out = cls.root / "fit"
         cls.case = write_case(cls.root / "fit.prm", 2e5, cls.out, cls.calibration, E=104e6, nu=0.22, c=10e3, phi=28,
                               psi=3)
@@ -124,6 +126,18 @@ class ACalibratedPair(unittest.TestCase):
         verdicts = {r["key"]: r["verdicts"]["material point"] for r in outside["rows"]}
         self.assertEqual(verdicts["peak_stress_MPa"], "outside")
         self.assertIn("Specimen scatter", (self.other_out / "report" / "index.html").read_text())
+
+    def test_the_report_carries_the_model_ladder_of_the_fit(self):
+        import json
+        fit = json.loads((self.out / "calibration" / "fit.json").read_text())["ladder"]
+        report = json.loads((self.out / "report" / "metrics.json").read_text())["ladder"]
+        self.assertEqual([r["model"] for r in report], ["mohr-coulomb constant", "mohr-coulomb tables"])
+        self.assertEqual(report, fit)
+        constant, tables = report
+        self.assertEqual((constant["k"], tables["k"]), (5, 5))  # E, nu, c, phi, psi: one value or one knot each
+        self.assertLess(tables["rss"], 1e-12)  # the truth is a tables model
+        self.assertGreater(constant["rss"], 1e-4)  # its hardening and softening are not constant
+        self.assertIn("Model ladder", (self.out / "report" / "index.html").read_text())
 
     def test_a_second_pair_refits_to_the_same_bits_and_reuses_the_results(self):
         self.assertEqual(self.second.returncode, 0, self.second.stderr)

@@ -1,10 +1,13 @@
 // `geocomp calibrate` end to end: a material-point target with known parameters, a case
 // whose continuum section is off, the calibrated section written, verified on the deal.II
-// cube, and pulled into another case file with deal.II's `include`.
+// cube, and pulled into another case file with deal.II's `include`; its model ladder's
+// criteria recomputed from the written RSS, n and k, and an unknown rung refused.
+#include "compare/ModelLadder.h"
 #include "compare/case/CaseDescription.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -97,5 +100,59 @@ TEST(CalibrateCommand, WritesAnIncludableSectionAndVerifiesItOnTheCube)
   const geocomp::CaseDescription c = geocomp::parse_case(including, (dir / "includes.prm").string());
   EXPECT_NEAR(c.continuum.youngs_modulus / 80e6, 1.0, 1e-6);
   EXPECT_NEAR(c.continuum.friction_angle.points[1].second / 32.0, 1.0, 1e-6);
+  fs::remove_all(dir);
+}
+
+TEST(CalibrateCommand, TheLadderWritesEachRungsCriteriaAsTheFormulaGivesThemAndRefusesAnUnknownRung)
+{
+  const fs::path dir = fs::temp_directory_path() / ("geocomp-ladder-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string exe = std::string("'") + GEOCOMP_EXE + "' ";
+  std::ofstream(dir / "target.prm") << axial_case(dir / "target", 80e6, 0.3, 32.0);
+  ASSERT_EQ(run(exe + "material-point '" + (dir / "target.prm").string() + "' > '" + (dir / "o1").string() + "' 2>&1"), 0)
+    << read(dir / "o1");
+  const std::string calibration = "subsection calibration\n  set targets = " +
+                                  (dir / "target/material-point.h5").string() +
+                                  "\n  set free parameters = E, nu, friction[1]\n  set starting values = case\n";
+
+  // Two rungs: the constant friction cannot follow the hardening and softening of the table.
+  std::ofstream(dir / "ladder.prm") << axial_case(dir / "ladder", 110e6, 0.22, 27.0) << calibration
+                                    << "  set ladder = mohr-coulomb constant, mohr-coulomb tables\nend\n";
+  ASSERT_EQ(run(exe + "calibrate '" + (dir / "ladder.prm").string() + "' > '" + (dir / "o2").string() + "' 2>&1"), 0)
+    << read(dir / "o2");
+  EXPECT_NE(read(dir / "o2").find("model ladder"), std::string::npos) << read(dir / "o2");
+  const std::vector<geocomp::compare::LadderRung> rungs =
+    geocomp::compare::ladder_from_fit_json(read(dir / "ladder/calibration/fit.json"));
+  ASSERT_EQ(rungs.size(), 2u);
+  EXPECT_EQ(rungs[0].name, "mohr-coulomb constant");
+  EXPECT_EQ(rungs[1].name, "mohr-coulomb tables");
+  double best_aic = INFINITY, best_bic = INFINITY;
+  for (const auto &r : rungs) {
+    ASSERT_TRUE(r.failure.empty()) << r.failure;
+    EXPECT_EQ(r.k, 3u) << r.name; // E, nu and one friction value (constant) or knot (tables)
+    ASSERT_GT(r.rss, 0.0) << r.name;
+    const double aic = double(r.n) * std::log(r.rss / double(r.n)) + 2.0 * double(r.k);
+    const double bic = double(r.n) * std::log(r.rss / double(r.n)) + double(r.k) * std::log(double(r.n));
+    EXPECT_NEAR(r.aic, aic, 1e-12 * std::abs(aic)) << r.name;
+    EXPECT_NEAR(r.bic, bic, 1e-12 * std::abs(bic)) << r.name;
+    best_aic = std::min(best_aic, aic);
+    best_bic = std::min(best_bic, bic);
+  }
+  for (const auto &r : rungs) {
+    EXPECT_NEAR(r.delta_aic, r.aic - best_aic, 1e-9 * std::abs(best_aic)) << r.name;
+    EXPECT_NEAR(r.delta_bic, r.bic - best_bic, 1e-9 * std::abs(best_bic)) << r.name;
+  }
+  EXPECT_LT(rungs[1].rss, rungs[0].rss) << "the tables made the target";
+  EXPECT_NE(read(dir / "ladder/calibration/index.html").find("Model ladder"), std::string::npos);
+
+  // An unknown rung: exit 2 naming the entry, nothing written.
+  std::ofstream(dir / "bad.prm") << axial_case(dir / "bad", 110e6, 0.22, 27.0) << calibration
+                                 << "  set ladder = mohr-coulomb constant, cam-clay\nend\n";
+  EXPECT_EQ(run(exe + "calibrate '" + (dir / "bad.prm").string() + "' > '" + (dir / "o3").string() + "' 2>&1"), 2);
+  const std::string message = read(dir / "o3");
+  EXPECT_NE(message.find("calibration/ladder"), std::string::npos) << message;
+  EXPECT_NE(message.find("cam-clay"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(dir / "bad")) << "nothing written";
   fs::remove_all(dir);
 }
