@@ -12,6 +12,7 @@
 // pointer without the leading slash), so a test can check that they are equal. The folder
 // is built under a temporary name beside `dir` and renamed into place when complete.
 // Units in the report: MPa, %, degrees; the lateral-pressure curve is compression positive.
+#include "compare/CrossEngine.h"
 #include "compare/Localization.h"
 #include "compare/Metrics.h"
 #include "compare/Scatter.h"
@@ -58,6 +59,8 @@ struct ReportInput {
   std::vector<CalibrationCurve> calibration_curves;
   /// The DEM's specimen-to-specimen scatter and each continuum engine's verdict (Scatter.h).
   std::optional<ScatterTable> scatter;
+  /// Two DEM engines on the same specimen (geocomp's and LIGGGHTS), CrossEngine.h.
+  std::optional<CrossEngineTable> cross_engine;
   std::vector<std::string> notes;
 };
 
