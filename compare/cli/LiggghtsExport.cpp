@@ -5,7 +5,6 @@
 #include "Engines.h"
 #include "LiggghtsEngine.h"
 
-
 #include <filesystem>
 #include <fstream>
 #include <iostream>
