@@ -11,6 +11,8 @@
 
 #include <unistd.h>
 
+extern char **environ;
+
 #include <fstream>
 #include <sstream>
 
@@ -43,6 +45,23 @@ dem::Packing probe_packing(const CaseDescription &c)
     probe.radius = {c.specimen.radius * (1.0 - c.specimen.radius_spread), c.specimen.radius * (1.0 + c.specimen.radius_spread)};
   probe.position.assign(probe.radius.size(), Eigen::Vector3d::Zero());
   return probe;
+}
+/// `env -u NAME ...` for every variable of Open MPI's and PMIx's run-time in our environment
+/// (OMPI_*, PMIX_*, ORTE_*, OPAL_*, but OMPI_ALLOW_*): geocomp is itself an MPI process (a
+/// singleton), and an `mpirun` started with its parent's PMIx server and rank variables
+/// ends at once with exit 1 and no output (measured); LIGGGHTS must start as a job of its own.
+std::vector<std::string> without_mpi_runtime()
+{
+  std::vector<std::string> argv = {"/usr/bin/env"};
+  for (char **e = environ; e && *e; ++e) {
+    const std::string var(*e);
+    const std::string name = var.substr(0, var.find('='));
+    const bool runtime = name.rfind("OMPI_", 0) == 0 || name.rfind("PMIX_", 0) == 0 || name.rfind("ORTE_", 0) == 0 ||
+                         name.rfind("OPAL_", 0) == 0;
+    if (runtime && name.rfind("OMPI_ALLOW_", 0) != 0)
+      argv.insert(argv.end(), {"-u", name});
+  }
+  return argv;
 }
 } // namespace
 
@@ -106,9 +125,9 @@ std::string liggghts_error_line(const fs::path &file)
 
 void run_liggghts_deck(const fs::path &dir, const LiggghtsLaunch &launch)
 {
-  std::vector<std::string> argv;
+  std::vector<std::string> argv = without_mpi_runtime();
   if (launch.ranks > 1) {
-    argv = {launch.mpirun, "-np", std::to_string(launch.ranks)};
+    argv.insert(argv.end(), {launch.mpirun, "-np", std::to_string(launch.ranks)});
     if (::geteuid() == 0)
       argv.push_back("--allow-run-as-root");
   }
