@@ -64,10 +64,10 @@ std::string cross_engine_html(const CrossEngineTable &t)
     << html_text(t.verdict) << (t.scatter_note.empty() ? "" : "; " + html_text(t.scatter_note)) << ".</p>\n<p>Both "
     << "engines play the same specimen; their curves are overlaid above. RMS of the difference over "
     << t.common_samples << " common strain samples (the " << html_text(t.reference) << " samples inside "
-    << html_text(t.other) << "'s strain range, " << html_text(t.other) << " interpolated linearly in strain), "
+    << html_text(t.other) << "' strain range, " << html_text(t.other) << " interpolated linearly in strain), "
     << "relative to the scale of the " << html_text(t.reference) << " curve: its largest |q/p'|, its largest "
-    << "|eps_v| (at least 0.1 %), its largest |y|; instantaneous wall stresses of both engines.</p>\n"
-    << "<table id=\"cross-engine\"><tr><th>curve</th><th>scale</th><th>rms " << html_text(t.other) << " &minus; "
+    << "|eps_v| (at least 0.1 %), its largest |y| [Pa]; instantaneous wall stresses of both engines.</p>\n"
+    << "<table id=\"cross-engine\"><tr><th>curve</th><th>scale (1, 1, Pa)</th><th>rms " << html_text(t.other) << " &minus; "
     << html_text(t.reference) << " [%]</th>";
   for (const auto &s : t.specimens)
     h << "<th>rms " << html_text(s) << " &minus; " << html_text(t.reference) << " [%]</th>";
