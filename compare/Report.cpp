@@ -56,6 +56,58 @@ std::string num_cell(double v, const std::string &path)
          (std::isfinite(v) ? format_number(v) : std::string("&mdash;")) + "</td>";
 }
 
+/// The cross-engine section (CrossEngine.h): the engines' rms beside the specimens'.
+std::string cross_engine_html(const CrossEngineTable &t)
+{
+  std::ostringstream h;
+  h << "<h2>Cross-engine: " << html_text(t.reference) << " and " << html_text(t.other) << "</h2>\n<p id=\"cross-engine-verdict\">"
+    << html_text(t.verdict) << (t.scatter_note.empty() ? "" : "; " + html_text(t.scatter_note)) << ".</p>\n<p>Both "
+    << "engines play the same specimen; their curves are overlaid above. RMS of the difference over "
+    << t.common_samples << " common strain samples (the " << html_text(t.reference) << " samples inside "
+    << html_text(t.other) << "' strain range, " << html_text(t.other) << " interpolated linearly in strain), "
+    << "relative to the scale of the " << html_text(t.reference) << " curve: its largest |q/p'|, its largest "
+    << "|eps_v| (at least 0.1 %), its largest |y| [Pa]; instantaneous wall stresses of both engines.</p>\n"
+    << "<table id=\"cross-engine\"><tr><th>curve</th><th>scale (1, 1, Pa)</th><th>rms " << html_text(t.other) << " &minus; "
+    << html_text(t.reference) << " [%]</th>";
+  for (const auto &s : t.specimens)
+    h << "<th>rms " << html_text(s) << " &minus; " << html_text(t.reference) << " [%]</th>";
+  h << "</tr>\n";
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const CrossEngineRow &row = t.rows[r];
+    const std::string path = "cross_engine/rows/" + std::to_string(r) + "/";
+    h << "<tr><td>" << html_text(row.label) << "</td>" << num_cell(row.scale, path + "scale")
+      << num_cell(row.engines * 100, path + "engines_pct");
+    for (std::size_t k = 0; k < row.specimens.size(); ++k)
+      h << num_cell(row.specimens[k] * 100, path + "specimens_pct/" + std::to_string(k));
+    h << "</tr>\n";
+  }
+  h << "</table>\n";
+  return h.str();
+}
+
+std::string cross_engine_json(const CrossEngineTable &t)
+{
+  std::ostringstream j;
+  j << "{\n    \"reference\": " << json_string(t.reference) << ",\n    \"other\": " << json_string(t.other)
+    << ",\n    \"common_samples\": " << t.common_samples << ",\n    \"agreement_pct\": "
+    << format_number(t.agreement * 100) << ",\n    \"verdict\": " << json_string(t.verdict)
+    << ",\n    \"scatter_note\": " << json_string(t.scatter_note) << ",\n    \"specimens\": [";
+  for (std::size_t k = 0; k < t.specimens.size(); ++k)
+    j << (k ? ", " : "") << json_string(t.specimens[k]);
+  j << "],\n    \"rows\": [";
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const CrossEngineRow &row = t.rows[r];
+    j << (r ? "," : "") << "\n      {\"key\": " << json_string(row.key) << ", \"label\": " << json_string(row.label)
+      << ", \"scale\": " << format_number(row.scale) << ", \"engines_pct\": " << format_number(row.engines * 100)
+      << ", \"specimens_pct\": [";
+    for (std::size_t k = 0; k < row.specimens.size(); ++k)
+      j << (k ? ", " : "") << format_number(row.specimens[k] * 100);
+    j << "]}";
+  }
+  j << "\n    ]\n  }";
+  return j.str();
+}
+
 std::string difference_label(const ReportInput &in, std::size_t k)
 {
   return in.metrics[k].label + " - " + in.metrics[0].label;
@@ -428,6 +480,8 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
       h << "<tr><td>" << html_text(k) << "</td><td>" << html_text(val) << "</td></tr>\n";
     h << "</table>\n";
   }
+  if (in.cross_engine)
+    h << cross_engine_html(*in.cross_engine);
   if (in.scatter) {
     const ScatterTable &t = *in.scatter;
     h << "<h2>Specimen scatter</h2>\n<p>The band of each metric over " << t.specimens.size()
@@ -563,6 +617,8 @@ std::string metrics_json(const ReportInput &in)
     }
     j << "\n    ]\n  }";
   }
+  if (in.cross_engine)
+    j << ",\n  \"cross_engine\": " << cross_engine_json(*in.cross_engine);
   j << "\n}\n";
   return j.str();
 }

@@ -12,6 +12,7 @@
 // pointer without the leading slash), so a test can check that they are equal. The folder
 // is built under a temporary name beside `dir` and renamed into place when complete.
 // Units in the report: MPa, %, degrees; the lateral-pressure curve is compression positive.
+#include "compare/CrossEngine.h"
 #include "compare/Localization.h"
 #include "compare/Metrics.h"
 #include "compare/ModelLadder.h"
@@ -61,6 +62,8 @@ struct ReportInput {
   std::optional<ScatterTable> scatter;
   /// The model ladder of a calibrated pair (ModelLadder.h); empty: none asked for.
   std::vector<LadderRung> ladder;
+  /// Two DEM engines on the same specimen (geocomp's and LIGGGHTS), CrossEngine.h.
+  std::optional<CrossEngineTable> cross_engine;
   std::vector<std::string> notes;
 };
 

@@ -60,9 +60,10 @@ std::vector<std::pair<double, double>> parse_points(const std::string &text, con
 void declare_head(dealii::ParameterHandler &prm)
 {
   prm.declare_entry("title", "", Anything(), "A title for reports.");
-  prm.declare_entry("engines", "dem, continuum", dealii::Patterns::MultipleSelection("dem|continuum|material-point"),
+  prm.declare_entry("engines", "dem, continuum", dealii::Patterns::MultipleSelection("dem|continuum|material-point|liggghts"),
                     "Engines that run the program: 'dem', 'continuum' (deal.II cube), 'material-point' "
-                    "(the continuum model at one point).");
+                    "(the continuum model at one point), 'liggghts' (the DEM specimen in LIGGGHTS, "
+                    "Debian package liggghts; docs/liggghts.md).");
   prm.declare_entry("seed", "1", dealii::Patterns::Integer(0), "Random seed: the same seed gives the same specimen and curves.");
 }
 

@@ -118,7 +118,7 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
   try {
     CaseHead::visit(static_cast<CaseHead &>(c), sections::ReadEntries{prm, reader, ""});
     if (c.engines.empty())
-      reader.fail("engines", "expected at least one of dem, continuum, material-point");
+      reader.fail("engines", "expected at least one of dem, continuum, material-point, liggghts");
     sections::parse_dem_sections(prm, reader, c);
     c.continuum = sections::parse_continuum(prm, reader);
     c.program = sections::parse_program(prm, stages, reader);

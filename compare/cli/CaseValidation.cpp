@@ -4,6 +4,7 @@
 #include "Log.h"
 
 #include "Engines.h"
+#include "LiggghtsEngine.h"
 
 #include "dem/program/SpecimenPreparation.h"
 
@@ -27,6 +28,11 @@ void validate_engine(const std::string &name, const CaseDescription &c)
   }
   if (name == "dem") {
     dem::check_specimen(c);
+    return;
+  }
+  if (name == "liggghts") {
+    dem::check_specimen(c);
+    check_liggghts_case(c, true);
     return;
   }
   throw CaseError(c.file, "engines", "the '" + name + "' engine is not available in this build");

@@ -41,6 +41,7 @@ struct Arguments {
 Command check_command();
 Command print_parameters_command();
 Command dem_command();
+Command liggghts_command();
 Command material_point_command();
 Command continuum_command();
 Command pair_command();

@@ -50,10 +50,12 @@ void write_results(const std::string &engine, const CaseDescription &c, const fs
   meta.seed = c.seed;
   meta.kinematics = engine == "dem" ? "finite strain (particle positions; box strain ln(L/L0), wall force over "
                                       "current wall area)"
-                                    : c.continuum.kinematics;
+                    : engine == "liggghts" ? "finite strain (LIGGGHTS particle positions; box strain from the wall "
+                                             "positions, wall force over current wall area)"
+                                           : c.continuum.kinematics;
   meta.status = status;
   meta.parameters = parameters_text(c);
-  if (engine == "dem")
+  if (engine == "dem" || engine == "liggghts")
     meta.specimen_record = dem::specimen_record(c, GEOCOMP_GIT_HASH);
   log::debug(engine + ": writing " + file.string() + " (status " + status + ")");
   write_response(file, r, meta);
@@ -61,7 +63,34 @@ void write_results(const std::string &engine, const CaseDescription &c, const fs
             " unloading branches -> " + file.string());
 }
 
+/// The `liggghts` engine (LiggghtsEngine.h): its results written as every engine's, a
+/// failed run's with the samples LIGGGHTS wrote and its message as /meta/status.
+Response run_liggghts_engine(const CaseDescription &c, const fs::path &dir, const RunSettings &settings)
+{
+  const fs::path file = dir / results_file("liggghts");
+  const bool root = rank_in(settings.comm) == 0;
+  if (!root) // LIGGGHTS runs once, from rank 0; the others read what it wrote
+    return Response{};
+  Response partial;
+  partial.engine = "liggghts";
+  try {
+    const Response r = run_liggghts(c, dir, settings.liggghts, &partial);
+    const std::string status = completion_status(r, c.program);
+    write_results("liggghts", c, file, r, status, settings.command_line);
+    if (status != "complete")
+      log::warning("liggghts: " + status);
+    return r;
+  } catch (const LiggghtsRefused &e) {
+    write_results("liggghts", c, file, partial, std::string("failed: ") + e.what(), settings.command_line);
+    throw std::runtime_error(std::string(e.what()) + "; the samples recorded so far are in " + file.string());
+  }
+}
 } // namespace
+
+bool results_up_to_date(const std::string &engine, const CaseDescription &c, const fs::path &dir)
+{
+  return up_to_date(dir / results_file(engine), c);
+}
 
 Response run_engine(const std::string &engine, const CaseDescription &c, const fs::path &dir, const RunSettings &settings)
 {
@@ -74,6 +103,8 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
       log::info(engine + ": up-to-date results reused: " + file.string());
     return read_response(file);
   }
+  if (engine == "liggghts")
+    return run_liggghts_engine(c, dir, settings);
   if (engine == "dem" && rank == 0)
     for (const std::string &unused : dem::ignored_specimen_entries(c))
       log::warning(unused);

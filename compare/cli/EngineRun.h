@@ -6,6 +6,8 @@
 // under the command line) and resumes from one; it takes particle snapshots along the
 // main path; the FE cube writes its mid-plane; a run that fails mid-way still writes what
 // it recorded, with /meta/status saying where and why, then throws.
+#include "LiggghtsEngine.h"
+
 #include "common/ProgramRunner.h"
 #include "common/Response.h"
 #include "compare/case/CaseDescription.h"
@@ -31,9 +33,15 @@ struct RunSettings {
   bool signal_checkpoints = true;
   /// Called on rank 0 at every sample instead of the terminal progress display, when set.
   std::function<void(const std::string &engine, const RunProgress &)> progress;
+  /// How the `liggghts` engine starts LIGGGHTS (`--mpi N`: its ranks).
+  LiggghtsLaunch liggghts;
 };
 
-/// Runs `engine` ("material-point", "continuum", "dem") of `c` and writes
+/// True when <dir>/<engine>.h5 holds a complete run of `c` (the same case text and parameters
+/// as parsed) made by this build: run_engine() reuses it.
+bool results_up_to_date(const std::string &engine, const CaseDescription &c, const std::filesystem::path &dir);
+
+/// Runs `engine` ("material-point", "continuum", "dem", "liggghts": LiggghtsEngine.h) of `c` and writes
 /// <dir>/<engine>.h5 (rank 0); returns its Response. Throws CaseError for a refused case,
 /// std::runtime_error for a run that failed mid-way or was stopped by a signal (the
 /// message says where its samples or its checkpoint are).

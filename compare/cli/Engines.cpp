@@ -90,7 +90,7 @@ std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const 
 
 const std::vector<std::string> &engine_names()
 {
-  static const std::vector<std::string> names = {"material-point", "continuum", "dem"};
+  static const std::vector<std::string> names = {"material-point", "continuum", "dem", "liggghts"};
   return names;
 }
 
@@ -141,6 +141,8 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
     return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir), continuum_material(c), communicator);
   if (name == "dem")
     return make_dem_engine(c, output_dir);
+  if (name == "liggghts")
+    throw std::logic_error("the liggghts engine runs outside this process: run_engine() plays it (LiggghtsEngine.h)");
   throw CaseError(c.file, "engines", "the '" + name + "' engine is not available in this build");
 }
 

@@ -15,7 +15,8 @@
 
 namespace geocomp::cli {
 
-/// Engines a case may name, in the order `pair` runs them.
+/// Engines a case may name, in the order `pair` runs them (LIGGGHTS after the DEM, whose
+/// prepared specimen it starts from).
 const std::vector<std::string> &engine_names();
 
 /// A ready engine for `name` ("material-point", "continuum", "dem"), in the state at the

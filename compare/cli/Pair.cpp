@@ -25,6 +25,8 @@ std::string engine_label(const std::string &engine)
     return "DEM";
   if (engine == "continuum")
     return "FE cube";
+  if (engine == "liggghts")
+    return "LIGGGHTS";
   return "material point";
 }
 
@@ -47,6 +49,31 @@ compare::ScatterTable specimen_scatter(const CaseDescription &c, const std::vect
     names.push_back(file);
   }
   return compare::scatter_table(names, specimens, engines, judged);
+}
+
+/// The cross-engine section when the pair has both DEM engines (compare/CrossEngine.h): their
+/// curves from the instantaneous wall stresses, beside the DEM against calibration/scatter's
+/// specimens. A curve that cannot be compared becomes a note.
+void add_cross_engine(compare::ReportInput &in, const CaseDescription &c, const EngineRuns &runs)
+{
+  const auto find = [&runs](const std::string &e) {
+    return std::find_if(runs.begin(), runs.end(), [&e](const auto &r) { return r.first == e; });
+  };
+  const auto dem = find("dem"), liggghts = find("liggghts");
+  if (dem == runs.end() || liggghts == runs.end())
+    return;
+  const auto curve = [&in](const std::string &name, const Response &r) {
+    return compare::NamedCurve{name, compare::extract_curve(r, in.kind, in.stage, in.axial)};
+  };
+  try {
+    std::vector<compare::NamedCurve> specimens;
+    for (const std::string &file : c.calibration.scatter)
+      specimens.push_back(curve(file, read_response(file)));
+    in.cross_engine = compare::cross_engine_table(curve(engine_label("dem"), dem->second),
+                                                  curve(engine_label("liggghts"), liggghts->second), specimens);
+  } catch (const std::exception &e) {
+    in.notes.push_back(std::string("Cross-engine section not computed: ") + e.what());
+  }
 }
 } // namespace
 
@@ -77,17 +104,18 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
   }
   if (!c.calibration.scatter.empty())
     in.scatter = specimen_scatter(c, in.metrics, options);
+  add_cross_engine(in, c, runs);
   // Rudnicki-Rice: the theory along the material-point path against each engine's onset.
   const Response *point = nullptr;
   std::vector<compare::OnsetEstimate> onsets;
   for (const auto &[engine, response] : runs) {
     if (engine == "material-point")
       point = &response;
-    if (engine != "dem")
+    if (engine == "dem")
+      add_dem_fields(in, dir, onsets);
+    else if (engine != "liggghts") // LIGGGHTS writes no fields; its stresses have no tangent to test
       onsets.push_back(
         compare::acoustic_tensor_onset(response, engine_label(engine) + " (acoustic tensor)", in.kind, -1, in.axial));
-    else
-      add_dem_fields(in, dir, onsets);
     if (engine == "continuum")
       add_continuum_plane(in, dir, response, cube_parameters(c, dir.string()).side);
   }
@@ -162,6 +190,10 @@ PairOutcome pair_case(const CaseDescription &c, const fs::path &dir, const RunSe
   for (const auto &engine : engine_names())
     if (std::find(c.engines.begin(), c.engines.end(), engine) != c.engines.end())
       engines.push_back(engine);
+  // A missing LIGGGHTS is bad input found before any engine runs (unless its results stand).
+  if (std::find(engines.begin(), engines.end(), "liggghts") != engines.end() &&
+      !(settings.reuse && results_up_to_date("liggghts", c, dir)))
+    require_liggghts(c, settings.liggghts);
   if (!pair_calibrates(c)) {
     for (const auto &engine : engines)
       outcome.runs.emplace_back(engine, run_engine(engine, c, dir, settings));
@@ -173,7 +205,9 @@ PairOutcome pair_case(const CaseDescription &c, const fs::path &dir, const RunSe
     run_target_cases(c, settings);
     const CaseDescription calibrated = calibrate_for_pair(c, dem ? &*dem : nullptr, dir, settings.comm);
     for (const auto &engine : engines)
-      outcome.runs.emplace_back(engine, engine == "dem" ? *dem : run_engine(engine, calibrated, dir, settings));
+      outcome.runs.emplace_back(engine, engine == "dem"        ? *dem
+                                        : engine == "liggghts" ? run_engine(engine, c, dir, settings) // a DEM
+                                                               : run_engine(engine, calibrated, dir, settings));
   }
   outcome.comparison = report_input(c, outcome.runs, dir);
   outcome.report = write_report_and_say(outcome.comparison, dir, settings.comm);

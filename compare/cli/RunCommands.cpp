@@ -30,20 +30,21 @@ std::string command_line;
 
 /// The settings of a command-line run: its communicator, the command line, the terminal's
 /// progress display, checkpoints on SIGINT/SIGTERM.
-RunSettings settings(bool reuse)
+RunSettings settings(bool reuse, int liggghts_ranks = 1)
 {
   RunSettings s;
   s.comm = engine_comm;
   s.reuse = reuse;
   s.command_line = command_line;
+  s.liggghts.ranks = liggghts_ranks;
   return s;
 }
 
 /// `pair` on a case from the command line: its exit code (1 when an engine did not complete
 /// its program; the warning was printed with the run).
-int pair_exit_code(const CaseDescription &c, const fs::path &dir, bool reuse)
+int pair_exit_code(const CaseDescription &c, const fs::path &dir, bool reuse, int liggghts_ranks = 1)
 {
-  return pair_case(c, dir, settings(reuse)).complete ? ok : run_failure;
+  return pair_case(c, dir, settings(reuse, liggghts_ranks)).complete ? ok : run_failure;
 }
 
 struct RunOptions {
@@ -51,16 +52,33 @@ struct RunOptions {
   fs::path dir;
   std::string dir_given_as; ///< "output/directory" or "--output", for messages
   bool reuse = true;
+  int liggghts_ranks = 1; ///< --mpi N: LIGGGHTS under `mpirun -np N`
 };
+
+/// The value of --mpi: a whole number of ranks, 1 to 4096.
+int parse_ranks(const std::string &text)
+{
+  std::size_t end = 0;
+  int n = 0;
+  try {
+    n = std::stoi(text, &end);
+  } catch (const std::exception &) {
+    end = 0;
+  }
+  if (end != text.size() || n < 1 || n > 4096)
+    throw UsageError("--mpi expects a number of LIGGGHTS ranks from 1 to 4096, got '" + text + "'");
+  return n;
+}
 
 /// The case, validated for its engines and `engine` (the one a command runs) before
 /// anything runs, and where its results go.
 RunOptions parse_run(const std::vector<std::string> &args, const std::vector<std::string> &engine = {})
 {
-  const Arguments a = Arguments::parse(args, {"output"}, {"force"});
+  const Arguments a = Arguments::parse(args, {"output", "mpi"}, {"force"});
   if (a.positional.size() != 1)
     throw UsageError("expected exactly one case file");
   RunOptions o;
+  o.liggghts_ranks = parse_ranks(a.get("mpi", "1"));
   o.c = read_valid_case(a.positional[0], engine);
   o.dir = a.has("output") ? fs::path(a.get("output")) : fs::path(o.c.output.directory);
   o.dir_given_as = a.has("output") ? "--output" : "output/directory";
@@ -96,7 +114,8 @@ Command engine_command(const std::string &engine, const std::string &summary, co
   Command c;
   c.name = engine;
   c.summary = summary;
-  c.usage = "usage: geocomp " + engine + " <case> [--output DIR] [--force]\n\n" + details +
+  c.usage = "usage: geocomp " + engine + " <case> [--output DIR] [--force]" +
+            (engine == "liggghts" ? " [--mpi N]" : "") + "\n\n" + details +
             "\nWrites <output directory>/" + results_file(engine) +
             " (docs/results-format.md); --output overrides the case's\n"
             "output directory; results made from the same case text by the same build are reused\n"
@@ -105,7 +124,7 @@ Command engine_command(const std::string &engine, const std::string &summary, co
     RunOptions o = parse_run(args, {engine});
     return guarded([&] {
       const auto lock = lock_output(o);
-      const Response r = run_engine(engine, o.c, o.dir, settings(o.reuse));
+      const Response r = run_engine(engine, o.c, o.dir, settings(o.reuse, o.liggghts_ranks));
       return static_cast<int>(completion_status(r, o.c.program) == "complete" ? ok : run_failure);
     });
   };
@@ -123,6 +142,17 @@ Command dem_command()
                         "wall positions), measuring wall and Love-Weber stress, coordination, fabric,\n"
                         "inertial number and unbalanced force; particle snapshots go to\n"
                         "<output>/dem-fields.h5 with an XDMF sidecar for ParaView.\n");
+}
+
+Command liggghts_command()
+{
+  return engine_command("liggghts", "run the case's DEM specimen in LIGGGHTS (Debian package liggghts)",
+                        "Exports the case (`geocomp export liggghts`) into <output>/liggghts/ from the\n"
+                        "specimen `geocomp dem` starts from, runs `liggghts -in in.geocomp` there (--mpi N:\n"
+                        "under `mpirun -np N`; its screen output in liggghts.out) and reads its samples back\n"
+                        "(`geocomp import liggghts`). Exit 2 when LIGGGHTS is not installed or the case has\n"
+                        "an entry it cannot play, 1 when LIGGGHTS refuses the deck (its ERROR line quoted).\n"
+                        "docs/liggghts.md.\n");
 }
 
 Command material_point_command()
@@ -144,15 +174,16 @@ Command pair_command()
   Command c;
   c.name = "pair";
   c.summary = "run every engine of a case (reusing up-to-date results), compare, write the report";
-  c.usage = "usage: geocomp pair <case> [--output DIR] [--force]\n\n"
+  c.usage = "usage: geocomp pair <case> [--output DIR] [--force] [--mpi N]\n\n"
             "Runs (or reuses) each engine the case names on the same loading program, computes\n"
             "the metrics of every Response (elastic limit, peak, softening, residual, dilatancy),\n"
-            "and writes <output directory>/report/index.html with plots and metrics.json.\n";
+            "and writes <output directory>/report/index.html with plots and metrics.json.\n"
+            "--mpi N runs the liggghts engine under `mpirun -np N` (docs/liggghts.md).\n";
   c.run = [](const std::vector<std::string> &args) {
     RunOptions o = parse_run(args);
     return guarded([&] {
       const auto lock = lock_output(o);
-      return pair_exit_code(o.c, o.dir, o.reuse);
+      return pair_exit_code(o.c, o.dir, o.reuse, o.liggghts_ranks);
     });
   };
   return c;
