@@ -61,12 +61,17 @@ CostFunction *make_cost(const Residuals &r, std::size_t n, std::size_t m)
   return f;
 }
 
-/// The bounds the solver sees: inside the parameter's own by 1e-6 of their width. The
-/// central differences of every Jacobian step to both sides of the point, and at a bound
-/// (a dilatancy of 0 at kappa = 0, where the fit starts or ends) one side lies outside the
-/// model's range: the evaluation fails and Ceres gives up.
-double inset_lower(const FreeParameter &p) { return p.lower + 1e-6 * (p.upper - p.lower); }
-double inset_upper(const FreeParameter &p) { return p.upper - 1e-6 * (p.upper - p.lower); }
+/// The lower bound the solver sees. The central differences of every Jacobian step to both
+/// sides of the point, and a cohesion or dilatancy of 0 is the edge of the model's range: at
+/// such a bound (a dilatancy of 0 at kappa = 0, where the fit starts or ends) one side lies
+/// outside it, the evaluation fails and Ceres gives up. Those bounds move inward by 1e-6 of
+/// the bounds' width; the others (friction 0.5 deg, nu 0, E 1e5 Pa) lie inside the range.
+double inset_lower(const FreeParameter &p)
+{
+  const bool edge = (p.family == FreeParameter::Family::Cohesion || p.family == FreeParameter::Family::Dilatancy) &&
+                    p.lower <= 0.0;
+  return edge ? p.lower + 1e-6 * (p.upper - p.lower) : p.lower;
+}
 
 /// Jacobian (m x n) of the residuals at x; false if the model fails there.
 bool jacobian(const CostFunction &f, const std::vector<double> &x, std::size_t m, Eigen::MatrixXd &J)
@@ -183,7 +188,7 @@ CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<
     if (p.family == FreeParameter::Family::Friction || p.family == FreeParameter::Family::Dilatancy)
       s = std::max(s, 1.0); // degrees: a unit step is a fair scale near zero
     functor.scale[i] = s;
-    x[i] = std::clamp(out.start[i], inset_lower(p), inset_upper(p)) / s;
+    x[i] = std::clamp(out.start[i], inset_lower(p), p.upper) / s;
   }
 
   CostFunction *cost = make_cost(functor, n, m);
@@ -191,7 +196,7 @@ CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<
   problem.AddResidualBlock(cost, nullptr, x.data());
   for (std::size_t i = 0; i < n; ++i) {
     problem.SetParameterLowerBound(x.data(), int(i), inset_lower(out.parameters[i]) / functor.scale[i]);
-    problem.SetParameterUpperBound(x.data(), int(i), inset_upper(out.parameters[i]) / functor.scale[i]);
+    problem.SetParameterUpperBound(x.data(), int(i), out.parameters[i].upper / functor.scale[i]);
   }
 
   Eigen::MatrixXd J;

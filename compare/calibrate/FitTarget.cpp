@@ -25,8 +25,10 @@ FitTarget make_target(std::string name, Response response, LoadingProgram progra
   t.name = std::move(name);
   t.response = std::move(response);
   t.program = std::move(program);
-  for (auto &s : t.program.stages)
+  for (auto &s : t.program.stages) { // the fit replays the main path only
     s.unload_at.clear();
+    s.locate_elastic_limit = false; // (its bisection needs branches)
+  }
   t.initial_stress = initial_stress;
   t.substeps = substeps;
   t.weight = weight;

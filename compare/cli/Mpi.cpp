@@ -22,7 +22,9 @@ void set_mpi_arguments(int argc, char **argv)
 
 void ensure_mpi()
 {
-  if (!mpi)
+  int initialized = 0; // by a host program (a test's main, an embedding application)
+  MPI_Initialized(&initialized);
+  if (!mpi && !initialized)
     mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(saved_argc, saved_argv, 1);
 }
 

@@ -90,11 +90,12 @@ TEST(CalibrationRoundTrip, AKnotThatStartsOnItsBoundIsFittedNotRefused)
   // the first Jacobian must not step outside the model's range (they did: "the material
   // point fails at the starting values").
   CalibrationParameters c = free_five();
-  c.free_parameters = {"E", "nu", "cohesion", "friction[1]", "dilatancy"};
-  ContinuumParameters start = perturbed();
+  c.free_parameters = {"dilatancy"};
+  ContinuumParameters start = truth();
+  start.dilatancy_angle.points[1].second = 3.0;
   ASSERT_EQ(start.dilatancy_angle.points[0].second, 0.0);
   const CalibrationResult r = calibrate(start, three_confinements(0.0), c);
-  const std::vector<double> expected = {80e6, 0.3, 30e3, 32.0, 0.0, 8.0};
+  const std::vector<double> expected = {0.0, 8.0};
   ASSERT_EQ(r.value.size(), expected.size());
   // A knot that ends on its bound stays 1e-6 of its range inside it (6e-5 deg here).
   for (std::size_t i = 0; i < expected.size(); ++i)

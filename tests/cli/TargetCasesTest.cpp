@@ -49,7 +49,9 @@ struct Folder {
 
 CaseDescription calibrated_case(const fs::path &file, const std::string &target, const fs::path &out)
 {
-  std::ofstream(file) << "set engines = material-point\nsubsection calibration\n  set targets = " << target
+  std::ofstream(file) << "set engines = material-point\nsubsection program\n  subsection stage 1\n"
+                      << "    set z = rate -1\n    set stop when = eps_zz <= -0.01\n  end\nend\n"
+                      << "subsection calibration\n  set targets = " << target
                       << "\n  set free parameters = E\nend\nsubsection output\n  set directory = " << out.string()
                       << "\nend\n";
   return read_case(file.string());

@@ -4,7 +4,9 @@
 // material point and the FE cube constructed (their constructors' own checks included),
 // the DEM's specimen checked as prepare_specimen() checks it before the first step (the
 // preparation itself, minutes of DEM time per case, is left out).
+#include "compare/cli/CaseValidation.h"
 #include "compare/cli/Engines.h"
+#include "compare/cli/PairCalibration.h"
 #include "dem/program/DemEngine.h"
 #include "dem/program/SpecimenPreparation.h"
 #include "tests/common/CommandRun.h"
@@ -33,7 +35,8 @@ std::vector<fs::path> case_files()
     std::stringstream text;
     text << std::ifstream(e.path()).rdbuf();
     const bool other_format = (name.rfind("s1_", 0) == 0 && text.str().find("subsection program") == std::string::npos) ||
-                              name.rfind("s2_", 0) == 0 || name.rfind("s4_", 0) == 0;
+                              name.rfind("s2_", 0) == 0 || name.rfind("s4_", 0) == 0 ||
+                              e.path().parent_path().filename() == "studies";
     if (!other_format)
       out.push_back(fs::absolute(e.path()));
   }
@@ -53,10 +56,13 @@ std::string engines_refusal(const fs::path &file, const fs::path &scratch)
       if (engine == "dem") {
         geocomp::dem::check_specimen(c);
         geocomp::dem::DemEngineParameters::from_case(c.dem);
+      } else if (engine == "liggghts") { // runs outside this process: its exporter's checks
+        geocomp::cli::validate_engine(engine, c);
       } else {
         geocomp::cli::make_engine(engine, c, scratch.string(), MPI_COMM_SELF);
       }
     }
+    geocomp::cli::validate_pair_calibration(c); // targets and scatter files, as `pair` needs them
   } catch (const std::exception &e) {
     const std::string what = e.what();
     return what.empty() ? "refused" : what;
