@@ -5,6 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${GEOCOMP_ASAN_BUILD_DIR:-build-asan}
+# Paths under the checkout hashed relative to it: another clone of the same sources hits the cache.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # -O1: the sanitizers need no more, and it compiles much faster than Release's -O3.

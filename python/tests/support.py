@@ -1,6 +1,7 @@
 """What the Python tests share: the built command line, run as a user runs it."""
 import os
 import pathlib
+import re
 import subprocess
 
 SOURCE_DIR = pathlib.Path(os.environ.get("GEOCOMP_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
@@ -19,6 +20,19 @@ def run_cli(*args, cwd=SOURCE_DIR):
     """Runs `geocomp ARGS` in `cwd`; returns the CompletedProcess (text stdout, stderr)."""
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     return subprocess.run([geocomp_exe(), *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=600)
+
+
+def small_demo(folder):
+    """The demo's case made small for a test (343 spheres, a 2^3 cube, to gamma 10 % with its
+    fixed branches, no bisection), written into `folder`; returns its path."""
+    text = (SOURCE_DIR / DEMO).read_text()
+    for entry, value in (("particles", "343"), ("cells per edge", "2"), ("stop when", "gamma_max >= 0.1"),
+                         ("locate elastic limit", "false"), ("directory", folder)):
+        text = re.sub(r"set " + entry + r" *= [^\n]*", "set " + entry + " = " + value, text)
+    path = os.path.join(folder, "small_demo.prm")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
 
 
 def largest(a):

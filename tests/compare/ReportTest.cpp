@@ -397,10 +397,9 @@ TEST(Report, OpensInABrowserWithEveryImageAndLinkAndNoScriptError)
   EXPECT_GE(links, out.plots.size() + 1); // every plot, and metrics.json
   EXPECT_EQ(browser_check(dir, work), counts + "ok");
   EXPECT_EQ(script_errors(dir / "index.html", work), "");
-  // A screenshot of the page as a reader sees it, kept in the build folder (ctest), else in
-  // the temporary folder (never in the working directory, the source tree under ctest).
-  const char *build = std::getenv("GEOCOMP_BINARY_DIR");
-  const fs::path shot = (build ? fs::path(build) : fs::temp_directory_path()) / "report-screenshot.png";
+  // A screenshot of the page as a reader sees it, kept in the build folder (never in the
+  // working directory, the source tree under ctest).
+  const fs::path shot = fs::path(GEOCOMP_BINARY_DIR) / "report-screenshot.png";
   EXPECT_TRUE(chromium({"--window-size=1200,2600", "--screenshot=" + shot.string()}, dir / "index.html", work).succeeded());
   EXPECT_GT(fs::file_size(shot), 50000u);
   EXPECT_EQ(read(shot).substr(1, 3), "PNG");
