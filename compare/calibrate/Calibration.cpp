@@ -51,27 +51,57 @@ struct Residuals {
   }
 };
 
-using CostFunction = ceres::DynamicNumericDiffCostFunction<Residuals, ceres::CENTRAL>;
+/// The residuals as Ceres sees them, with a Jacobian by finite differences that stay inside
+/// the bounds and inside the model's range. Column j is the central difference
+///     J_j = (r(x + h e_j) - r(x - h e_j)) / (2 h),   h = 1e-6 max(|x_j|, 1)
+/// (x is scaled to order one), and, where one side leaves the bounds [l_j, u_j] or the
+/// material point fails there, the one-sided difference on the other side,
+///     J_j = (r(x + h e_j) - r(x)) / h   or   (r(x) - r(x - h e_j)) / h.
+/// A parameter on its bound (a dilatancy of 0 at kappa = 0, where the fit starts or ends) or
+/// next to a point the model refuses is then differentiated, where a central difference fails
+/// the whole evaluation and Ceres gives up ("Residual and Jacobian evaluation failed"). Only
+/// when both sides fail is the evaluation refused.
+class BoundedDifferences : public ceres::CostFunction {
+public:
+  BoundedDifferences(const Residuals &r, std::vector<double> lower, std::vector<double> upper, std::size_t m)
+      : residuals_(r), lower_(std::move(lower)), upper_(std::move(upper))
+  {
+    mutable_parameter_block_sizes()->push_back(int(lower_.size()));
+    set_num_residuals(int(m));
+  }
 
-CostFunction *make_cost(const Residuals &r, std::size_t n, std::size_t m)
-{
-  auto *f = new CostFunction(new Residuals(r));
-  f->AddParameterBlock(int(n));
-  f->SetNumResiduals(int(m));
-  return f;
-}
+  bool Evaluate(double const *const *x, double *r, double **jacobians) const override
+  {
+    if (!residuals_(x, r))
+      return false;
+    if (jacobians == nullptr || jacobians[0] == nullptr)
+      return true;
+    const std::size_t n = lower_.size(), m = std::size_t(num_residuals());
+    std::vector<double> shifted(x[0], x[0] + n), plus(m), minus(m);
+    const double *at[] = {shifted.data()};
+    for (std::size_t j = 0; j < n; ++j) {
+      const double h = 1e-6 * std::max(std::abs(x[0][j]), 1.0);
+      shifted[j] = x[0][j] + h;
+      const bool up = shifted[j] <= upper_[j] && residuals_(at, plus.data());
+      shifted[j] = x[0][j] - h;
+      const bool down = shifted[j] >= lower_[j] && residuals_(at, minus.data());
+      shifted[j] = x[0][j];
+      if (!up && !down)
+        return false;
+      const double *hi = up ? plus.data() : r, *lo = down ? minus.data() : r;
+      const double width = (up ? h : 0.0) + (down ? h : 0.0);
+      for (std::size_t i = 0; i < m; ++i)
+        jacobians[0][i * n + j] = (hi[i] - lo[i]) / width;
+    }
+    return true;
+  }
 
-/// The lower bound the solver sees. The central differences of every Jacobian step to both
-/// sides of the point, and a cohesion or dilatancy of 0 is the edge of the model's range: at
-/// such a bound (a dilatancy of 0 at kappa = 0, where the fit starts or ends) one side lies
-/// outside it, the evaluation fails and Ceres gives up. Those bounds move inward by 1e-6 of
-/// the bounds' width; the others (friction 0.5 deg, nu 0, E 1e5 Pa) lie inside the range.
-double inset_lower(const FreeParameter &p)
-{
-  const bool edge = (p.family == FreeParameter::Family::Cohesion || p.family == FreeParameter::Family::Dilatancy) &&
-                    p.lower <= 0.0;
-  return edge ? p.lower + 1e-6 * (p.upper - p.lower) : p.lower;
-}
+private:
+  Residuals residuals_;
+  std::vector<double> lower_, upper_;
+};
+
+using CostFunction = BoundedDifferences;
 
 /// Jacobian (m x n) of the residuals at x; false if the model fails there.
 bool jacobian(const CostFunction &f, const std::vector<double> &x, std::size_t m, Eigen::MatrixXd &J)
@@ -188,15 +218,20 @@ CalibrationResult calibrate(const ContinuumParameters &start, const std::vector<
     if (p.family == FreeParameter::Family::Friction || p.family == FreeParameter::Family::Dilatancy)
       s = std::max(s, 1.0); // degrees: a unit step is a fair scale near zero
     functor.scale[i] = s;
-    x[i] = std::clamp(out.start[i], inset_lower(p), p.upper) / s;
+    x[i] = std::clamp(out.start[i], p.lower, p.upper) / s;
   }
 
-  CostFunction *cost = make_cost(functor, n, m);
+  std::vector<double> lower(n), upper(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    lower[i] = out.parameters[i].lower / functor.scale[i];
+    upper[i] = out.parameters[i].upper / functor.scale[i];
+  }
+  auto *cost = new CostFunction(functor, lower, upper, m);
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, x.data());
   for (std::size_t i = 0; i < n; ++i) {
-    problem.SetParameterLowerBound(x.data(), int(i), inset_lower(out.parameters[i]) / functor.scale[i]);
-    problem.SetParameterUpperBound(x.data(), int(i), out.parameters[i].upper / functor.scale[i]);
+    problem.SetParameterLowerBound(x.data(), int(i), lower[i]);
+    problem.SetParameterUpperBound(x.data(), int(i), upper[i]);
   }
 
   Eigen::MatrixXd J;

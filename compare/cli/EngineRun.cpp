@@ -131,9 +131,21 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
   std::optional<ProgramCheckpoint> resumed;
   int ranks = 1;
   MPI_Comm_size(settings.comm, &ranks);
+  // After the program (its end or an exception) the signals kill again: a pair's fit and
+  // continuum runs that follow the DEM are not left deaf to Ctrl-C.
+  struct DefaultSignalsAfterwards {
+    bool installed = false;
+    ~DefaultSignalsAfterwards()
+    {
+      if (installed)
+        dem::restore_default_interrupt_handlers();
+    }
+  } signals;
   if (e->can_write_states() && ranks == 1) {
-    if (settings.signal_checkpoints)
+    if (settings.signal_checkpoints) {
       dem::install_interrupt_handlers();
+      signals.installed = true;
+    }
     CheckpointPolicy policy;
     policy.every_seconds = c.dem.checkpoint_interval;
     policy.stop_requested = [] { return dem::interrupt_requested() != 0; };

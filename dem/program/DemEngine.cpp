@@ -156,6 +156,12 @@ void install_interrupt_handlers()
   sigaction(SIGTERM, &sa, nullptr);
 }
 
+void restore_default_interrupt_handlers()
+{
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+}
+
 int interrupt_requested()
 {
   if (g_interrupt)

@@ -110,6 +110,9 @@ struct Interrupted : std::runtime_error
 
 /// SIGINT and SIGTERM set a flag instead of killing the process (async-signal-safe).
 void install_interrupt_handlers();
+/// SIGINT and SIGTERM back to their default action (terminate): what follows a DEM run in the
+/// same process (a fit, a continuum run) is stopped by them as usual.
+void restore_default_interrupt_handlers();
 /// The signal that requested the stop (0: none).
 int interrupt_requested();
 /// Raises the flag as a signal would (tests, GUIs).

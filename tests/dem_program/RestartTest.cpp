@@ -204,3 +204,31 @@ TEST(DemEngineInterrupt, RequestStopsTheRunWithACheckpoint)
   EXPECT_EQ(back->measure().stress, engine.measure().stress);
   std::filesystem::remove(file);
 }
+
+// A command that runs the DEM and then something else (a pair's fit, its continuum runs) must
+// stop on Ctrl-C after the DEM as before it: the handlers that turn the signal into a
+// checkpoint are taken down again. In a child: with the handlers, SIGTERM only raises the
+// flag; after restore_default_interrupt_handlers() it terminates the process.
+TEST(InterruptHandlers, SigtermRaisesTheFlagWhileInstalledAndKillsOnceRestored)
+{
+  for (const bool restored : {false, true}) {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      install_interrupt_handlers();
+      if (restored)
+        restore_default_interrupt_handlers();
+      ::raise(SIGTERM);
+      std::_Exit(interrupt_requested() == SIGTERM ? 3 : 4);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    if (restored) {
+      ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
+      EXPECT_EQ(WTERMSIG(status), SIGTERM);
+    } else {
+      ASSERT_TRUE(WIFEXITED(status)) << "status " << status;
+      EXPECT_EQ(WEXITSTATUS(status), 3);
+    }
+  }
+}
