@@ -8,6 +8,8 @@
 // L0 / R = (4 pi N / (3 eta))^(1/3), so 100 000 spheres give L0 / R = 85 and about 4 700 slab
 // particles, 16 bytes each a sample: 75 kB a sample, 75 MB for 1 000 samples, on disk only
 // (the report reads it back once). The full snapshots (DemSnapshots.h) stay at dem/snapshots.
+// Each record copies the engine's fields once (DemEngine::snapshot, O(particles + contacts)),
+// while the sampling interval before it took many time steps, each O(particles + contacts) too.
 //
 // File <dir>/dem-midplane.bin, little-endian, appended one fixed-size record a sample so that a
 // sample costs O(slab) (an HDF5 file here is rewritten whole on every append):
