@@ -5,8 +5,10 @@
 #include "compare/GnuplotString.h"
 #include "compare/HtmlString.h"
 #include "compare/JsonString.h"
+#include "compare/StateMapsReport.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -316,6 +318,7 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
        << "set size noratio\nset key top left box opaque\nunset cblabel\nset autoscale cb\n";
     pngs.push_back(name + ".png");
   }
+  gp << state_maps_script(in.state_maps, dir, pngs);
   script = gp.str();
   return pngs;
 }
@@ -391,7 +394,8 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
     << "</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
        "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:4px 8px}"
        "td.num{text-align:right;font-family:monospace}th{background:#eee}img{max-width:49%;margin:2px}"
-       ".note{color:#a33}td.outside{color:#a33;font-weight:bold}</style></head><body>\n";
+       ".note{color:#a33}td.outside{color:#a33;font-weight:bold}.maprow{display:flex;flex-wrap:wrap;gap:4px}"
+       ".maprow p{width:100%;margin:0.4em 0 0}.panel{flex:1}.panel img{max-width:100%}</style></head><body>\n";
   h << "<h1>" << html_text(in.title) << "</h1>\n";
   if (!in.case_name.empty())
     h << "<p>Case: <code>" << html_text(in.case_name) << "</code></p>\n";
@@ -410,7 +414,9 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
   if (!plot_message.empty())
     h << "<p class=\"note\">" << html_text(plot_message) << "</p>\n";
   for (const auto &p : pngs)
-    h << "<a href=\"" << html_text(p) << "\"><img src=\"" << html_text(p) << "\" alt=\"" << html_text(p) << "\"></a>\n";
+    if (!(p.rfind("state", 0) == 0 && p.size() > 5 && std::isdigit(static_cast<unsigned char>(p[5])))) // own section
+      h << "<a href=\"" << html_text(p) << "\"><img src=\"" << html_text(p) << "\" alt=\"" << html_text(p) << "\"></a>\n";
+  h << state_maps_html(in.state_maps, in.state_maps_note, pngs);
 
   if (!in.metrics.empty()) {
     h << "<h2>Metrics</h2>\n<table id=\"metrics\"><tr><th>metric</th><th>units</th>";
@@ -619,6 +625,8 @@ std::string metrics_json(const ReportInput &in)
   }
   if (in.cross_engine)
     j << ",\n  \"cross_engine\": " << cross_engine_json(*in.cross_engine);
+  if (!in.state_maps.empty())
+    j << ",\n  \"named_states\": " << state_maps_json(in.state_maps);
   j << "\n}\n";
   return j.str();
 }

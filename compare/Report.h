@@ -17,6 +17,7 @@
 #include "compare/Metrics.h"
 #include "compare/ModelLadder.h"
 #include "compare/Scatter.h"
+#include "compare/SectionMaps.h"
 #include "compare/Verdict.h"
 
 #include <filesystem>
@@ -56,6 +57,10 @@ struct ReportInput {
   std::vector<NamedMetrics> metrics; ///< the first is the reference of the differences
   std::optional<RrVerdict> verdict;
   std::vector<DisplacementMap> maps; ///< mid-section maps (S0 Fig. 4 style)
+  /// Maps at the named states (B, peak, D, DEM onset), DEM | FE per row (SectionMaps.h);
+  /// `state_maps_note` says where the states and the sections come from.
+  std::vector<StateMaps> state_maps;
+  std::string state_maps_note;
   std::vector<std::pair<std::string, std::string>> calibrated_parameters;
   std::vector<CalibrationCurve> calibration_curves;
   /// The DEM's specimen-to-specimen scatter and each continuum engine's verdict (Scatter.h).

@@ -102,13 +102,6 @@ void add_dem_fields(compare::ReportInput &in, const fs::path &dir, std::vector<c
     note << "; band of " << loc.band.band_particles << " particles, planarity " << loc.band.planarity;
   dem_onset.note = note.str();
   onsets.push_back(dem_onset);
-  const dem::ParticleFields &first = fields.front(), &last = fields.back();
-  const double y_mid = 0.5 * (first.box_min.y() + first.box_max.y());
-  std::ostringstream title;
-  title << "DEM, y = L0/2, from strain " << first.label << " to " << last.label << ", from the box centre";
-  for (int component : {0, 2})
-    in.maps.push_back(compare::midsection_map(snapshots.front(), snapshots.back(), y_mid, 2.0 * mean_radius,
-                                              component, title.str()));
 }
 
 } // namespace geocomp::cli

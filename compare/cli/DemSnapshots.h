@@ -1,7 +1,7 @@
 #pragma once
 // DEM particle snapshots along the main path: taken during the run (SnapshotRecorder,
 // into <dir>/dem-fields.h5 with an XDMF sidecar for ParaView), read back by the report
-// for the DEM's localization onset and band and its mid-section maps (S0 Fig. 3, 5).
+// for the DEM's localization onset and band (S0 Fig. 3, 5).
 #include "common/ProgramRunner.h"
 #include "compare/LocalizationOnsets.h"
 #include "compare/Metrics.h"
@@ -41,8 +41,8 @@ private:
 
 /// The DEM side of the report from <dir>/dem-fields.h5: the localization onset and band
 /// (compare::detect_localization, local-strain radius 3 mean radii, docs/metrics.md) as
-/// the DEM entry of `onsets`, and the mid-section maps of u_x and u_z in the slab
-/// |y - L0/2| <= 2 R between the first and the last snapshot; a note when there are none.
+/// the DEM entry of `onsets`; a note when there are no snapshots. (The DEM's maps come from
+/// its mid-section at every sample, DemSection.h.)
 void add_dem_fields(compare::ReportInput &in, const std::filesystem::path &dir,
                     std::vector<compare::OnsetEstimate> &onsets);
 

@@ -1,4 +1,5 @@
 #include "EngineRun.h"
+#include "DemSection.h"
 #include "DemSnapshots.h"
 #include "Engines.h"
 #include "Log.h"
@@ -111,12 +112,23 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
   std::unique_ptr<LoadingEngine> e = make_engine(engine, c, dir.string(), settings.comm);
   ProgramRunner runner(c.program, *e);
   ProgressPrinter progress(engine);
+  // Fields along the main path: the DEM's snapshots and mid-section, the cube's mid-plane.
   std::unique_ptr<SnapshotRecorder> snapshots;
-  if (auto *d = dynamic_cast<dem::DemEngine *>(e.get()))
+  std::unique_ptr<DemSectionRecorder> dem_section;
+  std::unique_ptr<CubeSectionRecorder> cube_section;
+  if (auto *d = dynamic_cast<dem::DemEngine *>(e.get())) {
     snapshots = std::make_unique<SnapshotRecorder>(*d, c, dir);
+    dem_section = std::make_unique<DemSectionRecorder>(*d, c, dir);
+  }
+  if (const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get()))
+    cube_section = std::make_unique<CubeSectionRecorder>(*cube, settings.comm);
   runner.on_progress([&](const RunProgress &p) {
     if (snapshots)
       (*snapshots)(p);
+    if (dem_section)
+      (*dem_section)(p);
+    if (cube_section)
+      (*cube_section)(p);
     if (rank != 0)
       return;
     if (settings.progress)
@@ -170,11 +182,15 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
       log::info(what.str());
       if (snapshots)
         snapshots->resume(resumed->runner.time, static_cast<unsigned int>(resumed->counter));
+      if (dem_section)
+        dem_section->resume(resumed->runner.time);
       e->restore(*resumed->current);
       r = runner.resume(std::move(resumed->runner), std::move(resumed->peak));
     } else {
       if (snapshots)
         snapshots->start();
+      if (dem_section)
+        dem_section->start();
       r = runner.run();
     }
     status = completion_status(r, c.program);
@@ -190,9 +206,8 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
   progress.finish();
   std::error_code ignored;
   fs::remove(checkpoint, ignored);
-  const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get());
-  if (cube && !failed)
-    write_mid_plane(*cube, dir, settings.comm);
+  if (cube_section && !failed)
+    cube_section->write(dir);
   if (rank == 0) {
     write_results(engine, c, file, r, status, settings.command_line);
     if (!failed && status != "complete")

@@ -10,47 +10,77 @@ namespace fs = std::filesystem;
 
 namespace {
 const char *const continuum_plane_file = "continuum-midplane.h5";
-const char *const plane_columns[5] = {"x", "z", "u_x", "u_z", "kappa"};
 } // namespace
 
-// Collective: every rank of the cube takes part in mid_plane(); rank 0 writes.
-void write_mid_plane(const continuum::CubeEngine &cube, const fs::path &dir, MPI_Comm comm)
+// Main-path samples of the last stage only, each once: a sample not later than the last
+// recorded one (a state the runner came back to) is not recorded again.
+void CubeSectionRecorder::operator()(const RunProgress &p)
 {
-  const continuum::MidPlaneSample plane = cube.mid_plane();
-  if (rank_in(comm) != 0)
+  if (p.branch != 0 || p.stage != p.stage_count - 1 || !p.sample)
+    return;
+  if (!times_.empty() && !(p.sample->time > times_.back()))
+    return;
+  continuum::MidPlaneSample plane = cube_.mid_plane(); // collective
+  if (rank_in(comm_) != 0)
+    return;
+  times_.push_back(p.sample->time);
+  planes_.push_back(std::move(plane));
+}
+
+void CubeSectionRecorder::write(const fs::path &dir) const
+{
+  if (rank_in(comm_) != 0 || planes_.empty())
     return;
   fs::create_directories(dir);
-  write_atomically(dir / continuum_plane_file, [&plane](const fs::path &tmp) {
+  write_atomically(dir / continuum_plane_file, [this](const fs::path &tmp) {
     const h5::Handle f = h5::create_file(tmp);
-    const std::vector<double> *columns[5] = {&plane.x, &plane.z, &plane.ux, &plane.uz, &plane.kappa};
-    for (int k = 0; k < 5; ++k)
-      h5::write(f.id(), plane_columns[k], *columns[k], {hsize_t(columns[k]->size())}, k == 4 ? "1" : "m");
+    const std::size_t n = planes_.front().x.size(), m = planes_.size();
+    h5::write(f.id(), "x", planes_.front().x, {hsize_t(n)}, "m");
+    h5::write(f.id(), "z", planes_.front().z, {hsize_t(n)}, "m");
+    h5::write(f.id(), "time", times_, {hsize_t(m)}, "s");
+    std::vector<double> ux, uz, kappa;
+    for (const auto &plane : planes_) {
+      ux.insert(ux.end(), plane.ux.begin(), plane.ux.end());
+      uz.insert(uz.end(), plane.uz.begin(), plane.uz.end());
+      kappa.insert(kappa.end(), plane.kappa.begin(), plane.kappa.end());
+    }
+    h5::write(f.id(), "u_x", ux, {hsize_t(m), hsize_t(n)}, "m");
+    h5::write(f.id(), "u_z", uz, {hsize_t(m), hsize_t(n)}, "m");
+    h5::write(f.id(), "kappa", kappa, {hsize_t(m), hsize_t(n)}, "1");
   });
 }
 
-/// FE maps beside the DEM ones: u_x and the equivalent plastic strain kappa on y = L0/2.
-/// The cube's bottom faces are rollers, so its displacements are measured from the x = 0
-/// face; the DEM's platens move symmetrically about the box centre. The FE u_x is shifted
-/// to the box centre, which moves by half the edge change, eps_xx L0 / 2 at the end of the
-/// main path, so both maps share one reference.
-void add_continuum_plane(compare::ReportInput &in, const fs::path &dir, const Response &response, double side)
+std::optional<compare::SectionSeries> read_cube_section(const fs::path &dir, double side, unsigned cells_per_side)
 {
   const fs::path file = dir / continuum_plane_file;
   if (!fs::exists(file))
-    return;
+    return std::nullopt;
   const h5::Handle f = h5::open_file(file);
-  std::vector<std::vector<double>> c;
-  for (const char *name : plane_columns)
-    c.push_back(h5::read_doubles(f.id(), name));
-  const std::vector<const ResponseSample *> main = response.path(0);
-  const double centre = main.empty() ? 0.0 : 0.5 * main.back()->strain(0, 0) * side;
-  for (double &u : c[2])
-    u -= centre;
-  compare::DisplacementMap ux{"FE cube, y = L0/2, end of the main path, from the box centre", "u_x", c[0], c[1],
-                              c[2]};
-  compare::DisplacementMap kappa{"FE cube, y = L0/2, end of the main path", "kappa", c[0], c[1], c[4], 100.0, "%"};
-  in.maps.push_back(ux);
-  in.maps.push_back(kappa);
+  if (!h5::exists(f.id(), "time")) // written by an older geocomp: the end state only
+    return std::nullopt;
+  compare::SectionSeries s;
+  s.engine = "FE cube";
+  s.x = h5::read_doubles(f.id(), "x");
+  s.z = h5::read_doubles(f.id(), "z");
+  s.times = h5::read_doubles(f.id(), "time");
+  const std::vector<double> ux = h5::read_doubles(f.id(), "u_x"), uz = h5::read_doubles(f.id(), "u_z");
+  const std::size_t n = s.x.size();
+  if (n == 0 || ux.size() != n * s.times.size() || uz.size() != ux.size())
+    throw std::runtime_error(file.string() + ": u_x and u_z are not time x points");
+  for (std::size_t k = 0; k < s.times.size(); ++k) {
+    s.ux.emplace_back(n);
+    s.uz.emplace_back(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      s.ux[k][i] = ux[k * n + i] - ux[i];
+      s.uz[k][i] = uz[k * n + i] - uz[i];
+    }
+  }
+  s.centre_x = s.centre_z = 0.5 * side;
+  const double spacing = side / (3.0 * std::max(1u, cells_per_side));
+  s.strain_radius = 1.5 * spacing;
+  s.marker = 0.5 * spacing;
+  s.tiles = true;
+  return s;
 }
 
 } // namespace geocomp::cli

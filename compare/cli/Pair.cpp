@@ -2,9 +2,9 @@
 #include "DemSnapshots.h"
 #include "Engines.h"
 #include "Log.h"
-#include "MidPlane.h"
 #include "Mpi.h"
 #include "PairCalibration.h"
+#include "PairMaps.h"
 #include "TargetCases.h"
 
 #include "compare/LocalizationOnsets.h"
@@ -116,21 +116,10 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
     else if (engine != "liggghts") // LIGGGHTS writes no fields; its stresses have no tangent to test
       onsets.push_back(
         compare::acoustic_tensor_onset(response, engine_label(engine) + " (acoustic tensor)", in.kind, -1, in.axial));
-    if (engine == "continuum")
-      add_continuum_plane(in, dir, response, cube_parameters(c, dir.string()).side);
   }
+  // DEM and FE maps side by side at the named states (B, peak, D, DEM onset).
+  add_state_maps(in, c, dir, onsets);
   in.calibrated_parameters = calibration::read_parameter_table(dir / "calibration");
-  // DEM and FE maps side by side: DEM u_x | FE u_x, DEM u_z | FE kappa.
-  std::vector<compare::DisplacementMap> dem_maps, fe_maps;
-  for (auto &m : in.maps)
-    (m.title.rfind("DEM", 0) == 0 ? dem_maps : fe_maps).push_back(std::move(m));
-  in.maps.clear();
-  for (std::size_t k = 0; k < std::max(dem_maps.size(), fe_maps.size()); ++k) {
-    if (k < dem_maps.size())
-      in.maps.push_back(std::move(dem_maps[k]));
-    if (k < fe_maps.size())
-      in.maps.push_back(std::move(fe_maps[k]));
-  }
   // A calibrated pair's continuum engines ran the calibrated section (PairCalibration.h).
   const std::optional<CaseDescription> calibrated = calibrated_case_in(c, dir);
   if (pair_calibrates(c)) {

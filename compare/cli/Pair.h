@@ -1,9 +1,9 @@
 #pragma once
 // `pair`: every engine a case names run on its one loading program (EngineRun.h), then
 // the comparison - metrics of every Response, the Rudnicki-Rice verdict against each
-// engine's onset, DEM and FE maps side by side - and the report. The same code serves
-// `geocomp pair`, each item of `geocomp sweep`, `report`/`compare` on existing results
-// and Python's geocomp.pair.
+// engine's onset, DEM and FE maps side by side at the named states - and the report.
+// The same code serves `geocomp pair`, each item of `geocomp sweep`, `report`/`compare`
+// on existing results and Python's geocomp.pair.
 #include "EngineRun.h"
 
 #include "compare/Report.h"

@@ -118,7 +118,8 @@ TEST(PairCommand, DemAndCubeGiveSnapshotsOnsetMapsAndTheSameCurvesAgain)
     << read(s.dir / "out1");
   const fs::path out = s.dir / "all";
   for (const char *f : {"dem.h5", "dem-fields.h5", "dem-fields.xdmf", "dem-specimen.bin", "continuum.h5",
-                        "continuum-midplane.h5", "material-point.h5", "report/index.html", "report/map3.png"})
+                        "continuum-midplane.h5", "dem-midplane.bin", "material-point.h5", "report/index.html",
+                        "report/state1_0_dem.png", "report/state1_0_fe.png", "report/state1_2_fe.png"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   // 12 snapshots after the first one, all on the main path of the last stage.
   const std::string groups = read_command("h5ls '" + (out / "dem-fields.h5").string() + "/snapshots'");
@@ -126,10 +127,11 @@ TEST(PairCommand, DemAndCubeGiveSnapshotsOnsetMapsAndTheSameCurvesAgain)
   const std::string metrics = read(out / "report/metrics.json");
   EXPECT_NE(metrics.find("DEM (particle local strain)"), std::string::npos);
   EXPECT_NE(metrics.find("\"DEM\""), std::string::npos);
-  // The FE u_x map is measured from the box centre, as the DEM's (symmetric platens): on a
-  // shortened x axis, positive on one side of the centre and negative on the other.
+  // The maps at the peak (state 1): the FE u_x is measured from the box centre, as the DEM's:
+  // on a shortened x axis, positive on one side of the centre and negative on the other.
+  EXPECT_NE(read(out / "report/index.html").find("data-state=\"peak\""), std::string::npos);
   {
-    std::ifstream map(out / "report/data/map1.dat");
+    std::ifstream map(out / "report/data/state1_0_fe.dat");
     double lo = 0.0, hi = 0.0;
     std::string line;
     std::getline(map, line);
@@ -211,8 +213,8 @@ TEST(CalibrateCommand, RecoversTheModulusOfAMaterialPointTargetAndRefusesMissing
 TEST(DemCommand, KilledRunResumesFromItsCheckpointWithTheSameCurvesAndSnapshots)
 {
   // A DEM run checkpointing at every sample is killed (SIGKILL) once its first checkpoint
-  // exists; the same command resumes it, and the curves and particle snapshots equal an
-  // uninterrupted run's bit for bit.
+  // exists; the same command resumes it, and the curves, particle snapshots and mid-section
+  // records equal an uninterrupted run's bit for bit.
   Scratch s;
   fs::path c = make_case(s.dir, "dem", "dem", 5);
   std::string text = read(c);
@@ -250,4 +252,9 @@ TEST(DemCommand, KilledRunResumesFromItsCheckpointWithTheSameCurvesAndSnapshots)
   EXPECT_TRUE(snaps_killed == snaps_whole)
     << "snapshots differ: " << read_command("h5ls '" + (killed / "dem-fields.h5").string() + "/snapshots' | wc -l")
     << " resumed against " << read_command("h5ls '" + (whole / "dem-fields.h5").string() + "/snapshots' | wc -l");
+  // The mid-section at every sample (the maps at named states): the same bytes too.
+  const std::string section_whole = read(whole / "dem-midplane.bin");
+  EXPECT_GT(section_whole.size(), 1000u);
+  EXPECT_TRUE(read(killed / "dem-midplane.bin") == section_whole)
+    << read(killed / "dem-midplane.bin").size() << " bytes resumed against " << section_whole.size();
 }

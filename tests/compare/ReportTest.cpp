@@ -2,6 +2,7 @@
 // with a strict little JSON reader), plots exist as PNGs when gnuplot is there, and the
 // folder appears whole (atomic) with or without gnuplot.
 #include "compare/Report.h"
+#include "compare/StateMapsReport.h"
 #include "common/Subprocess.h"
 #include "Synthetic.h"
 
@@ -380,6 +381,94 @@ std::string script_errors(const fs::path &page, const fs::path &work)
   return errors;
 }
 } // namespace
+
+/// The cbrange of the panel that writes `png` in a gnuplot script ("" when it has none).
+std::string panel_range(const std::string &gp, const std::string &png)
+{
+  const std::size_t at = gp.find("set output '" + png + "'");
+  const std::size_t range = gp.find("set cbrange [", at);
+  if (at == std::string::npos || range == std::string::npos)
+    return "";
+  return gp.substr(range + 13, gp.find(']', range) - range - 13);
+}
+
+TEST(Report, NamesEveryStateAndGivesTheDemAndFePanelsOfARowOneColourScale)
+{
+  // A DEM section of scattered points and an FE grid, sheared differently (the DEM twice the
+  // FE): both panels of a row on the DEM's wider range; the onset not found is said so.
+  SectionSeries dem, fe;
+  dem.engine = "DEM";
+  fe.engine = "FE cube";
+  for (int i = 0; i < 15; ++i)
+    for (int k = 0; k < 15; ++k) {
+      dem.x.push_back(-0.1 + (i + 0.3 * (k % 2)) * 0.2 / 15);
+      dem.z.push_back(-0.1 + k * 0.2 / 15);
+      fe.x.push_back((i + 0.5) * 0.2 / 15);
+      fe.z.push_back((k + 0.5) * 0.2 / 15);
+    }
+  fe.centre_x = fe.centre_z = 0.1;
+  dem.strain_radius = fe.strain_radius = 0.025;
+  dem.marker = 0.006;
+  fe.marker = 0.2 / 30;
+  fe.tiles = true;
+  for (SectionSeries *s : {&dem, &fe}) {
+    const double a = s == &dem ? 0.02 : 0.01;
+    s->times = {0.0, 1.0, 2.0};
+    for (int t = 0; t < 3; ++t) {
+      s->ux.emplace_back();
+      s->uz.emplace_back();
+      for (std::size_t i = 0; i < s->x.size(); ++i) {
+        s->ux.back().push_back(-0.5 * t * a * (s->x[i] - s->centre_x) + 1e-3 * t);
+        s->uz.back().push_back(0.5 * t * a * (s->z[i] - s->centre_z));
+      }
+    }
+  }
+  const std::vector<NamedState> states{{"B", "elastic limit", true, 0.01, 2e6, ""},
+                                       {"peak", "maximum", true, 0.02, 5e6, ""},
+                                       {"D", "past the peak", true, 0.02, 4.7e6, ""},
+                                       {"DEM onset", "onset", false, NAN, NAN, "no onset found (DEM)"}};
+  ReportInput in = sample_input();
+  in.maps.clear();
+  in.state_maps = state_maps(states, {&dem, {0.0, 0.01, 0.02}}, "DEM", {&fe, {0.0, 0.01, 0.02}}, "FE cube");
+  in.state_maps_note = "synthetic sections";
+  const fs::path dir = scratch("states");
+  ReportOptions o;
+  if (!geocomp::program_available("gnuplot"))
+    o.gnuplot = "/nonexistent/gnuplot";
+  const ReportOutcome out = write_report(in, dir, o);
+  const std::string html = read(dir / "index.html"), gp = read(dir / "report.gp");
+  for (const char *name : {"B", "peak", "D", "DEM onset"})
+    EXPECT_NE(html.find(std::string("data-state=\"") + name + "\""), std::string::npos) << name;
+  EXPECT_NE(html.find("DEM onset: not found, no maps: no onset found (DEM)."), std::string::npos);
+  // Three states with maps, three rows each (u_x, u_z, local gamma), DEM | FE.
+  for (std::size_t st = 0; st < 3; ++st)
+    for (std::size_t r = 0; r < 3; ++r) {
+      const std::string left = state_map_png(st, r, 0) + ".png", right = state_map_png(st, r, 1) + ".png";
+      const std::string range = panel_range(gp, left);
+      ASSERT_FALSE(range.empty()) << left;
+      EXPECT_EQ(range, panel_range(gp, right)) << left;
+      const MapRow &row = in.state_maps[st].rows[r];
+      EXPECT_EQ(range, format_number(row.range.low) + ":" + format_number(row.range.high));
+      for (const MapPanel *p : {&row.left, &row.right})
+        for (double v : p->v)
+          if (std::isfinite(v)) {
+            EXPECT_GE(v, row.range.low);
+            EXPECT_LE(v, row.range.high);
+          }
+      if (out.plots_made)
+        EXPECT_NE(html.find("src=\"" + left + "\""), std::string::npos);
+    }
+  // The DEM's u_x at the peak reaches a L/2 = 0.02 x 0.1 m = 2 mm at x = -L/2 (the FE's at most
+  // 0.01 x 0.093 m): the row's range reaches the DEM's largest.
+  EXPECT_NEAR(in.state_maps[1].rows[0].range.high, 2.0, 1e-9);
+  const Json root = JsonReader(read(dir / "metrics.json")).parse();
+  const Json *onset = lookup(root, "named_states/3/found");
+  ASSERT_NE(onset, nullptr);
+  EXPECT_EQ(onset->kind, Json::Bool);
+  EXPECT_EQ(lookup(root, "named_states/1/strain_pct")->text, "2");
+  if (!std::getenv("GEOCOMP_TEST_KEEP"))
+    fs::remove_all(dir.parent_path());
+}
 
 TEST(Report, OpensInABrowserWithEveryImageAndLinkAndNoScriptError)
 {
