@@ -10,6 +10,7 @@
 #include "common/case/CaseParameters.h"
 #include "compare/calibrate/CalibrationParameters.h"
 #include "continuum/case/ContinuumParameters.h"
+#include "coupled/case/RveCaseParameters.h"
 #include "dem/case/DemParameters.h"
 
 #include <string>
@@ -18,6 +19,7 @@ namespace geocomp {
 
 struct CaseDescription : dem::DemCase {
   continuum::ContinuumParameters continuum;
+  coupled::RveCaseParameters rve; ///< section `dem rve` (continuum/model = dem rve)
   LoadingProgram program;
   OutputParameters output;
   CalibrationParameters calibration;

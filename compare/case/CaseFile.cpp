@@ -8,6 +8,7 @@
 #include "common/case/TextEncoding.h"
 #include "compare/calibrate/CalibrationSection.h"
 #include "continuum/case/ContinuumSections.h"
+#include "coupled/case/RveSection.h"
 #include "dem/case/DemSections.h"
 #include "dem/case/SpecimenRecord.h"
 
@@ -28,6 +29,7 @@ void declare_all(ParameterHandler &prm, unsigned int stages)
   sections::declare_head(prm);
   sections::declare_dem_sections(prm);
   sections::declare_continuum(prm);
+  sections::declare_dem_rve(prm);
   sections::declare_program(prm, stages);
   sections::declare_output(prm);
   sections::declare_calibration(prm);
@@ -121,6 +123,7 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
       reader.fail("engines", "expected at least one of dem, continuum, material-point, liggghts");
     sections::parse_dem_sections(prm, reader, c);
     c.continuum = sections::parse_continuum(prm, reader);
+    c.rve = sections::parse_dem_rve(prm, reader);
     c.program = sections::parse_program(prm, stages, reader);
     c.output = sections::parse_output(prm, reader);
     c.calibration = sections::parse_calibration(prm, reader, c.continuum);
@@ -178,6 +181,8 @@ std::string parameters_text(const CaseDescription &c)
   continuum::ContinuumParameters::visit(c.continuum, continuum);
   continuum.section("continuum/nikolaevsky");
   continuum::NikolaevskyParameters::visit(c.continuum.nikolaevsky, continuum);
+  continuum.section("dem rve");
+  coupled::RveCaseParameters::visit(c.rve, continuum);
   CanonicalText rest("output");
   OutputParameters::visit(c.output, rest);
   rest.section("calibration");

@@ -6,6 +6,7 @@
 #include "Engines.h"
 #include "LiggghtsEngine.h"
 
+#include "coupled/case/RveSection.h"
 #include "dem/program/SpecimenPreparation.h"
 
 #include <algorithm>
@@ -17,7 +18,12 @@ void validate_engine(const std::string &name, const CaseDescription &c)
 {
   if (name == "material-point" || name == "continuum") {
     continuum_material(c);
+    if (c.continuum.model == "dem rve" && name == "material-point")
+      throw CaseError(c.file, "continuum/model",
+                      "dem rve (FEM x DEM) runs on the continuum engine (the FE cube), not on the material point");
     try {
+      if (c.continuum.model == "dem rve")
+        coupled::rve_grains(c);
       material_point_parameters(c);
       if (name == "continuum")
         continuum::check_cube_parameters(cube_parameters(c, ""));

@@ -6,6 +6,7 @@
 #include "continuum/driver/CaseMaterial.h"
 #include "continuum/driver/MaterialPointEngine.h"
 #include "continuum/fe/CubeEngine.h"
+#include "coupled/case/RveSection.h"
 #include "common/AtomicFile.h"
 #include "common/Version.h"
 #include "dem/case/SpecimenRecord.h"
@@ -137,6 +138,13 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
   log::debug(name + ": setting up the engine of " + c.file);
   if (name == "material-point")
     return std::make_unique<continuum::MaterialPointEngine>(continuum_material(c), material_point_parameters(c));
+  if (name == "continuum" && c.continuum.model == "dem rve") { // FEM x DEM (docs/coupled.md)
+    log::info("continuum: preparing the RVE of every quadrature point (" + std::to_string(c.rve.particles) +
+              " spheres)");
+    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir),
+                                                   continuum::fixed_material(coupled::make_rve_material(c, c.rve)),
+                                                   communicator);
+  }
   if (name == "continuum")
     return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir), continuum_material(c), communicator);
   if (name == "dem")

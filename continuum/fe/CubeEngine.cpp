@@ -4,6 +4,7 @@
 #include "continuum/fe/CubeEngineImpl.h"
 #include "continuum/fe/RigidBodyModes.h"
 #include "continuum/models/Mandel.h"
+#include "continuum/models/PointStateModel.h"
 
 
 #include <deal.II/base/function.h>
@@ -243,6 +244,10 @@ void CubeEngine::Impl::setup_quadrature_data()
   materials[base] = factory->make(base);
   if (prm.imperfection_radius > 0.0)
     materials[weak] = factory->make(weak);
+  if (prm.kinematics == Kinematics::finite_strain && dynamic_cast<const PointStateModel *>(materials[base].get()))
+    throw std::invalid_argument("continuum cube: the material '" + materials[base]->name() +
+                                "' keeps its own point state and takes small strains only: set 'kinematics' to "
+                                "'small strain'");
   elastic_tangent = materials[base]->elasticity().stiffness();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -272,7 +277,9 @@ void CubeEngine::Impl::setup_quadrature_data()
         d.old_finite = initial_finite_strain_history(*d.material, prm.initial_stress * Tensor3::Identity());
         record_finite(d, finite_strain_update(*d.material, Matrix3::Identity(), d.old_finite));
       } else {
-        d.trial = d.material->update(prestrain, PlasticHistory{});
+        // Empty for the plasticity models; a point-state model's state anchored at eps_0.
+        d.old_history = d.material->initial_history(prestrain);
+        d.trial = d.material->update(prestrain, d.old_history);
       }
       d.old_stress = d.trial.stress;
     }

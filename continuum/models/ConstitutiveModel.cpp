@@ -4,6 +4,8 @@
 
 namespace geocomp::continuum {
 
+PlasticHistory ConstitutiveModel::initial_history(const Vector6 &) const { return {}; }
+
 const char *to_string(ReturnRegion region) {
   switch (region) {
   case ReturnRegion::elastic:

@@ -15,10 +15,13 @@
 #include "continuum/models/IsotropicElasticity.h"
 #include "continuum/models/Mandel.h"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 namespace geocomp::continuum {
+
+class PointState; // an opaque, model-owned point state (PointStateModel.h)
 
 /// Which part of the yield surface the stress returned to. For Mohr-Coulomb (principal
 /// stresses s1 >= s2 >= s3, tension positive): `plane` = the face s1-s3, `left_edge` = the
@@ -37,6 +40,10 @@ struct PlasticHistory {
   /// docs/continuum-models.md); for both, on a smooth part of the surface it is the
   /// engineering plastic shear-strain measure the DEM comparison uses.
   double kappa = 0.0;
+  /// The state of a model whose point is more than eps^p and kappa (PointStateModel.h: a
+  /// DEM cell, ...): immutable once made, so copying the history (double buffering, the
+  /// engines' save/restore) shares it; null for the plasticity models.
+  std::shared_ptr<const PointState> state;
 };
 
 /// Volumetric plastic strain tr(eps^p).
@@ -68,6 +75,11 @@ public:
   /// @param[in] total_strain eps_{n+1} (Mandel). @param[in] old history at t_n.
   virtual MaterialPointUpdate update(const Vector6 &total_strain,
                                      const PlasticHistory &old) const = 0;
+
+  /// The history of the virgin material at the caller's initial total strain eps_0 (its
+  /// prestrain): empty for the plasticity models; a point-state model anchors its state
+  /// there (PointStateModel.h).
+  virtual PlasticHistory initial_history(const Vector6 &initial_strain) const;
 
   /// Yield function value at a stress and kappa (<= 0 admissible) [Pa].
   virtual double yield_function(const Vector6 &stress, double kappa) const = 0;

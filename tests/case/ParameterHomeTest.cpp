@@ -8,6 +8,7 @@
 #include "compare/calibrate/CalibrationSection.h"
 #include "compare/case/CaseDescription.h"
 #include "continuum/case/ContinuumSections.h"
+#include "coupled/case/RveSection.h"
 #include "dem/case/DemSections.h"
 #include "dem/case/SpecimenRecord.h"
 #include "tests/common/ScratchFolder.h"
@@ -35,6 +36,7 @@ std::vector<std::string> declared_entries()
   sections::declare_head(prm);
   sections::declare_dem_sections(prm);
   sections::declare_continuum(prm);
+  sections::declare_dem_rve(prm);
   sections::declare_output(prm);
   sections::declare_calibration(prm);
   std::ostringstream json;

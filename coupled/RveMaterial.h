@@ -1,0 +1,85 @@
+#pragma once
+// @sect3{The RveMaterial class: a periodic DEM cell as the constitutive law of a point}
+//
+// Why it exists: the hierarchical FEM x DEM method (Guo & Zhao 2014; Nitka, Combe, Desrues
+// et al. 2011; issue 35) puts a small DEM assembly at every quadrature point and lets the
+// grains' own law answer the finite-element strain. This class is that law, a
+// continuum::PointStateModel whose point state is a dem::PeriodicCell: every point starts
+// from a copy of one prepared RVE (dem/periodic/PeriodicPreparation.h, PeriodicProgram.h).
+//
+// Driving (small strain). From the committed state, a cell at total strain eps_n, to the
+// total strain eps_{n+1} of the current Newton iterate, a copy of the cell is driven
+// quasi-statically over n DEM steps of its own time step dt by the homogeneous velocity
+// gradient
+// $$ L = \frac{\Delta\varepsilon}{n\,\Delta t},\qquad \Delta\varepsilon = \varepsilon_{n+1} - \varepsilon_n, $$
+// symmetric (no spin: the small-strain increment carries no rotation). The affine strain the
+// cell sees over the increment is then $\int L\,dt = \Delta\varepsilon$ (its log strain, to
+// $O(\Delta\varepsilon^2)$). n (`steps per increment`) sets the cell's strain rate, hence its
+// inertial number: the choice that makes the response quasi-static. A zero increment
+// returns the committed state itself (a quasi-static cell holds its state when nothing moves).
+// The stress is the cell's Love-Weber stress at the end of the n steps (CellStress.h:
+// contact part, plus the kinetic part when the cell was prepared with it), tension positive.
+//
+// Tangent: the normal-spring contact stiffness of the cell's current contact network. For
+// spheres the branch vector is along the normal, l = |l| n, so the affine stiffness of the
+// normal springs is the totally symmetric tensor
+// $$ C_{ijkl} = \frac1V\sum_c k_{n,c}\,|l_c|^2\,n_i n_j n_k n_l, $$
+// and the cell's servo stiffness (CellStress::stiffness) holds $K_{ab} = C_{abab} = C_{aabb}$.
+// The tangent is its orthotropic part in the cell axes (the 3x3 normal block $C_{aabb}$ and
+// the shear diagonal $C_{abab}$; the odd moments $C_{aaab}$, $C_{abac}$ left out), positive
+// semi-definite as principal blocks of a PSD tensor. It omits the tangential springs and the
+// non-affine relaxation of the packing, so it is not the consistent tangent: the FE Newton
+// converges linearly with it (a quasi-Newton).
+// `elasticity()` (the FE cube's reference stiffness: residual floor, prestrain, localization
+// scan) is the isotropic projection of the prepared cell's tangent:
+// $K = C_{iijj}/9$, $G = (C_{ijij} - C_{iijj}/3)/10$.
+#include "continuum/models/IsotropicElasticity.h"
+#include "continuum/models/PointStateModel.h"
+#include "dem/periodic/PeriodicCell.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace geocomp::coupled {
+
+struct RveParameters {
+  std::uint64_t steps_per_increment = 200; ///< n >= 1: DEM steps over one strain increment
+};
+
+/// The point state: the cell and the total strain it was driven to.
+struct RveState : continuum::PointState {
+  RveState(dem::PeriodicCell c, const continuum::Vector6 &e) : cell(std::move(c)), strain(e) {}
+  dem::PeriodicCell cell;
+  continuum::Vector6 strain; ///< eps_n (Mandel) of the caller
+};
+
+class RveMaterial : public continuum::PointStateModel {
+public:
+  /// @param[in] prepared the RVE every point starts from (its stress made current here; it
+  /// must carry contacts); @param[in] parameters n >= 1. Throws std::invalid_argument.
+  RveMaterial(dem::PeriodicCell prepared, const RveParameters &parameters);
+
+  std::shared_ptr<const continuum::PointState> initial_state(const continuum::Vector6 &initial_strain) const override;
+  continuum::PointStateUpdate advance(const continuum::Vector6 &total_strain,
+                                      const std::shared_ptr<const continuum::PointState> &old) const override;
+
+  const continuum::IsotropicElasticity &elasticity() const override { return elastic_; }
+  std::string name() const override { return "dem_rve"; }
+
+  const RveParameters &parameters() const { return p_; }
+  const dem::PeriodicCell &prepared() const { return prepared_; }
+
+  /// The velocity gradient that drives a cell by the strain increment (Mandel) over n steps.
+  static dem::Mat3 velocity_gradient(const continuum::Vector6 &increment, std::uint64_t n, double time_step);
+  /// Stress (Mandel, tension positive) and tangent of a cell as this model reports them.
+  static continuum::Vector6 stress(const dem::PeriodicCell &cell);
+  static continuum::Matrix6 tangent(const dem::PeriodicCell &cell);
+
+private:
+  dem::PeriodicCell prepared_;
+  RveParameters p_;
+  continuum::IsotropicElasticity elastic_;
+};
+
+} // namespace geocomp::coupled

@@ -1,0 +1,224 @@
+// FEM x DEM at one element: the deal.II cube whose quadrature points each own a periodic DEM
+// cell (coupled/RveMaterial.h) against the same cell driven alone by the same strain history.
+#include "continuum/fe/CubeEngine.h"
+#include "coupled/RveMaterial.h"
+#include "tests/dem_periodic/TestCells.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+using namespace geocomp;
+using namespace geocomp::coupled;
+
+namespace {
+
+const double pressure = 1e5; // [Pa]
+
+/// A tiny consolidated RVE (60 spheres at 100 kPa), prepared once for every test.
+const dem::PeriodicCell &prepared_rve()
+{
+  static const dem::PeriodicCell cell = [] {
+    dem::test::RveSetup s;
+    s.particles = 60;
+    s.pressure = pressure;
+    dem::test::Consolidated c = dem::test::consolidated_rve(s);
+    if (!c.compression.converged)
+      throw std::runtime_error("prepared_rve: the isotropic compression did not converge");
+    return std::move(c.cell);
+  }();
+  return cell;
+}
+
+/// Every axis kinematic: the axial compression with lateral extension of a drained test.
+Stage kinematic_stage()
+{
+  Stage st;
+  st.name = "kinematic";
+  st.axes = {{AxisDrive::rate(1.5e-3), AxisDrive::rate(1.0e-3), AxisDrive::rate(-5.0e-3)}};
+  return st;
+}
+
+/// One trilinear element, small strain, one load step per sample.
+continuum::CubeParameters single_element()
+{
+  continuum::CubeParameters c;
+  c.side = 1.0;
+  c.cells_per_side = 1;
+  c.kinematics = continuum::Kinematics::small_strain;
+  c.regularization = "none";
+  c.steps_per_advance = 1;
+  return c;
+}
+
+struct CubeRun {
+  std::vector<ResponseSample> samples;
+  std::unique_ptr<continuum::CubeEngine> cube;
+};
+
+/// The single-element cube of RVEs under the kinematic stage, sampled at t = 0.2, 0.4, ... 1.
+CubeRun run_cube(const std::shared_ptr<const RveMaterial> &rve, const Stage &stage)
+{
+  CubeRun r;
+  r.cube = std::make_unique<continuum::CubeEngine>(single_element(), continuum::fixed_material(rve), MPI_COMM_WORLD);
+  StageControl control;
+  control.stage = &stage;
+  r.cube->begin_control(control);
+  for (int k = 1; k <= 5; ++k) {
+    r.cube->advance_to(0.2 * k);
+    r.samples.push_back(r.cube->measure());
+  }
+  return r;
+}
+
+} // namespace
+
+TEST(RveMaterial, ASingleElementCubeOfRvesEqualsTheStandAloneRveUnderTheSameStrainHistory)
+{
+  RveParameters rp;
+  rp.steps_per_increment = 200;
+  const auto rve = std::make_shared<const RveMaterial>(prepared_rve(), rp);
+  const Stage stage = kinematic_stage();
+  const auto t0 = std::chrono::steady_clock::now();
+  const CubeRun fe = run_cube(rve, stage);
+  const double fe_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(fe.cube->statistics().cutbacks, 0u);
+
+  // The stand-alone RVE: the same increments of the program's strain, one per load step.
+  StageControl control;
+  control.stage = &stage;
+  dem::PeriodicCell alone = prepared_rve();
+  continuum::Vector6 previous = continuum::Vector6::Zero();
+  double worst = 0.0;
+  for (int k = 1; k <= 5; ++k) {
+    continuum::Vector6 eps = continuum::Vector6::Zero();
+    for (int a = 0; a < 3; ++a)
+      eps[a] = control.strain(a, 0.2 * k);
+    alone.set_velocity_gradient(RveMaterial::velocity_gradient(eps - previous, rp.steps_per_increment,
+                                                               alone.parameters().time_step));
+    alone.run(rp.steps_per_increment);
+    previous = eps;
+    const dem::Mat3 expected = alone.stress().total();
+    const ResponseSample &s = fe.samples[k - 1];
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(s.strain(a, a), eps[a], 1e-15) << "sample " << k << " axis " << a;
+      for (int b = 0; b < 3; ++b) {
+        // Diagonal: the wall reactions over the face area; off-diagonal: the volume average.
+        // Round-off only: the element's 8 Gauss points see the program's strain to within an
+        // ulp (sums of shape-function gradients), which 1000 DEM steps amplify to ~1e-13 p.
+        EXPECT_NEAR(s.stress(a, b), expected(a, b), 1e-11 * pressure) << "sample " << k << " (" << a << b << ")";
+        worst = std::max(worst, std::abs(s.stress(a, b) - expected(a, b)) / pressure);
+      }
+    }
+  }
+  // The RVE carried load and the deviatoric loading changed its stress (not a trivial path).
+  EXPECT_GT(-alone.stress().total()(2, 2), 1.2 * pressure);
+  std::printf("single element of RVEs: %.2f s, largest |sigma_FE - sigma_RVE| / p = %.3g, sigma_zz = %.6g Pa\n",
+              fe_seconds, worst, alone.stress().total()(2, 2));
+}
+
+// Through the constitutive interface with exactly the program's strains, the same bits as the
+// stand-alone cell: a trial (a Newton iterate later cut back) leaves the committed cell as it was.
+TEST(RveMaterial, ItsCommittedHistoryEqualsTheStandAloneRveBitForBitAndATrialLeavesItUntouched)
+{
+  RveParameters rp;
+  rp.steps_per_increment = 150;
+  const RveMaterial rve(prepared_rve(), rp);
+  dem::PeriodicCell alone = prepared_rve();
+  continuum::PlasticHistory committed = rve.initial_history(continuum::Vector6::Zero());
+  const continuum::Vector6 rate = (continuum::Vector6() << 1e-3, -2e-3, -3e-3, 1e-3, 0.0, 5e-4).finished();
+  for (int k = 1; k <= 4; ++k) {
+    const continuum::Vector6 eps = (0.5 * k) * rate;
+    const continuum::Vector6 before = RveMaterial::stress(static_cast<const RveState &>(*committed.state).cell);
+    // A rejected iterate: twice the increment, then dropped.
+    const continuum::MaterialPointUpdate rejected = rve.update(2.0 * eps - (0.5 * (k - 1)) * rate, committed);
+    EXPECT_NE(rejected.stress, before);
+    EXPECT_EQ(RveMaterial::stress(static_cast<const RveState &>(*committed.state).cell), before);
+    const continuum::MaterialPointUpdate accepted = rve.update(eps, committed);
+    committed = accepted.history; // commit
+
+    alone.set_velocity_gradient(RveMaterial::velocity_gradient(eps - (0.5 * (k - 1)) * rate, rp.steps_per_increment,
+                                                               alone.parameters().time_step));
+    alone.run(rp.steps_per_increment);
+    EXPECT_EQ(accepted.stress, RveMaterial::stress(alone)) << "increment " << k;
+    EXPECT_EQ(accepted.tangent, RveMaterial::tangent(alone)) << "increment " << k;
+  }
+  // An unchanged strain returns the committed state itself.
+  const auto &last = static_cast<const RveState &>(*committed.state);
+  const continuum::MaterialPointUpdate same = rve.update(last.strain, committed);
+  EXPECT_EQ(same.history.state, committed.state);
+}
+
+// The cube's save()/restore() keep the RVEs (shared immutable committed states): a path
+// replayed from a saved state gives the same bits as the first time.
+TEST(RveMaterial, TheCubeReplaysARestoredPathOfRvesBitForBit)
+{
+  RveParameters rp;
+  rp.steps_per_increment = 100;
+  const auto rve = std::make_shared<const RveMaterial>(prepared_rve(), rp);
+  const Stage stage = kinematic_stage();
+  continuum::CubeEngine cube(single_element(), continuum::fixed_material(rve), MPI_COMM_WORLD);
+  StageControl control;
+  control.stage = &stage;
+  cube.begin_control(control);
+  cube.advance_to(0.2);
+  const std::unique_ptr<EngineState> saved = cube.save();
+  std::vector<ResponseSample> first, second;
+  for (int k = 2; k <= 3; ++k) {
+    cube.advance_to(0.2 * k);
+    first.push_back(cube.measure());
+  }
+  cube.restore(*saved);
+  for (int k = 2; k <= 3; ++k) {
+    cube.advance_to(0.2 * k);
+    second.push_back(cube.measure());
+  }
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    EXPECT_EQ(first[k].time, second[k].time);
+    EXPECT_EQ(first[k].stress, second[k].stress) << "sample " << k;
+  }
+  EXPECT_GT(-first.back().stress(2, 2), pressure); // loaded beyond the preparation
+}
+
+// Triaxial compression of one element of RVEs: lateral walls under -p (tractions), the axial
+// wall kinematic. Free dofs make the Newton work with the contact-stiffness tangent (a
+// quasi-Newton: linear convergence); every step must reach the tolerance (no relaxed
+// acceptance), the lateral walls then carry -p and the axial stress rises above p.
+TEST(RveMaterial, ATriaxialElementOfRvesConvergesWithTheContactStiffnessTangentAndHoldsItsLateralStress)
+{
+  RveParameters rp;
+  rp.steps_per_increment = 100;
+  const auto rve = std::make_shared<const RveMaterial>(prepared_rve(), rp);
+  Stage stage;
+  stage.name = "triaxial";
+  stage.axes = {{AxisDrive::stress(-pressure), AxisDrive::stress(-pressure), AxisDrive::rate(-5.0e-3)}};
+  continuum::CubeParameters cp = single_element();
+  cp.newton_tolerance = 1e-6;
+  cp.newton_stagnation_factor = 0.0; // no relaxed acceptance: every step to the tolerance
+  cp.max_newton_iterations = 40;
+  cp.initial_stress = -pressure; // the walls start at the RVE's preparation pressure
+  continuum::CubeEngine cube(cp, continuum::fixed_material(rve), MPI_COMM_WORLD);
+  StageControl control;
+  control.stage = &stage;
+  cube.begin_control(control);
+  double previous_axial = -pressure;
+  for (int k = 1; k <= 2; ++k) {
+    cube.advance_to(0.25 * k);
+    const ResponseSample s = cube.measure();
+    std::printf("sample %d: Newton iterations per step %.1f, steps %.0f, cut-backs %.0f, eps = (%.4g, %.4g, %.4g), "
+                "sigma = (%.6g, %.6g, %.6g) Pa\n",
+                k, s.extras[0], s.extras[1], s.extras[2], s.strain(0, 0), s.strain(1, 1), s.strain(2, 2),
+                s.stress(0, 0), s.stress(1, 1), s.stress(2, 2));
+    EXPECT_EQ(s.extras[3], 0.0); // no relaxed step
+    for (int a = 0; a < 2; ++a) {
+      EXPECT_NEAR(s.stress(a, a), -pressure, 1e-5 * pressure) << "sample " << k << " axis " << a;
+      EXPECT_GT(s.strain(a, a), 0.0) << "sample " << k << " axis " << a; // the sides bulge
+    }
+    EXPECT_LT(s.stress(2, 2), previous_axial) << "sample " << k; // the deviator grows
+    previous_axial = s.stress(2, 2);
+  }
+}
