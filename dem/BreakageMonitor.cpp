@@ -23,7 +23,7 @@ std::vector<double> max_contact_forces(const DemSystem& sys)
 
 std::size_t BreakageMonitor::check(DemSystem& sys)
 {
-  if (settings_.shelter_siblings) sys.release_separated_siblings();
+  if (settings_.replacement.shelter_siblings) sys.release_separated_siblings();
   f_max_ = max_contact_forces(sys);
   const ParticleStore& p = sys.particles();
   std::vector<Replacement> batch;
@@ -49,7 +49,7 @@ std::size_t BreakageMonitor::check(DemSystem& sys)
     batch.push_back({id, std::move(fr.children)});
   }
   if (batch.empty()) return 0;
-  sys.replace_spheres(batch, settings_.shelter_siblings);
+  sys.replace_spheres(batch, settings_.replacement);
   for (const BreakageEvent& e : found) lost_mass_ += e.lost_mass;
   events_.insert(events_.end(), found.begin(), found.end());
   return found.size();

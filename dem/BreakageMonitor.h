@@ -3,12 +3,13 @@
 // Why it exists: breakage is an event between steps, not a force law, so it lives beside
 // the integrator and leaves the step loop untouched (a run without a monitor costs what
 // it cost before). Every `interval` steps it
-//   1. frees sibling groups whose members no longer overlap (DemSystem.h);
+//   1. frees sibling groups whose members no longer overlap (sheltering only, DemSystem.h);
 //   2. takes each free sphere's largest contact force $F_{max}$ (pairs and walls, the
 //      magnitude of the total contact force) from DemSystem::contacts();
 //   3. breaks every sphere with $d \ge d_L$ and $F_{max}/d^2 \ge \sigma_c(d)$ (S2 eq. (3)),
 //      in increasing id order, by the fragment rules (BreakageModes.h) with its own
-//      seeded generator, and replaces them in one batch.
+//      seeded generator, and replaces them in one batch; the fragments' overlaps at
+//      placement are released at `replacement.release_speed` (ContactLaw.h).
 // The force a parent reaches can exceed the threshold by at most the force increase of
 // one interval: that is the resolution of the criterion.
 #pragma once
@@ -43,7 +44,7 @@ public:
     CrushingCriterion criterion;
     std::uint64_t interval = 10;   ///< steps between checks
     std::uint64_t seed = 1;
-    bool shelter_siblings = true;  ///< children of one parent ignore each other until apart
+    ReplacementOptions replacement; ///< overlap release (default) or sibling sheltering
   };
 
   explicit BreakageMonitor(const Settings& s);

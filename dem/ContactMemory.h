@@ -14,6 +14,12 @@
 // exported with ContactState. A broken cohesive bond must never form again (S3), so
 // the keys of broken bonds are also kept in a sorted set that outlives the pair's
 // stay in the neighbour list.
+//
+// A contact created by fragment replacement (S2, DemSystem::replace_spheres) starts with
+// a placement overlap $\delta_p$: the overlap the fragments had when they were put inside
+// their parent. The contact parts see $\delta - \delta_p$ instead of $\delta$, and
+// $\delta_p$ falls at the constant rate $\dot\delta_p$ to zero (ContactLaw.h), so the
+// overlap is released gradually instead of as one explosive repulsion.
 #pragma once
 
 #include "dem/Types.h"
@@ -35,10 +41,12 @@ struct ContactMemory
   Vec3 bond = Vec3::Zero();    ///< tangential part e_t of the bond spring (j's anchor relative to i's)
   double bond_origin = 0.0;    ///< overlap delta_0 when the bond formed
   std::uint32_t state = 0;
+  double placement = 0.0;      ///< placement overlap delta_p still to release [m] (S2 fragments)
+  double placement_rate = 0.0; ///< its release rate [m/s]
 
   bool has(std::uint32_t bit) const { return (state & bit) != 0; }
   /// True when anything must be carried over to the next neighbour list.
-  bool active() const { return state != 0 || rolling.squaredNorm() != 0.0; }
+  bool active() const { return state != 0 || rolling.squaredNorm() != 0.0 || placement != 0.0; }
 };
 
 /// The memory as seen with the pair's roles as given: `keep` returns it unchanged, else

@@ -86,6 +86,8 @@ inline void separate(ContactMemory& m)
 {
   if (!m.active()) return;
   m.rolling.setZero();
+  m.placement = 0.0;  // apart: no placement overlap is left to release
+  m.placement_rate = 0.0;
   if (m.has(ContactMemory::bonded)) {
     m.state = (m.state & ~ContactMemory::bonded) | ContactMemory::bond_broken;
     m.bond.setZero();
@@ -215,7 +217,7 @@ public:
         if constexpr (kLinear<Law>) {
           if (batched_) {
             const PairBatchLosses l = evaluate_linear_pairs_batched(wbatch, std::size_t(b) * kBlock, end);
-            if constexpr (Track) BlockLosses{l.damping, l.friction, 0.0}.store(in_.energy.contact_block(b));
+            if constexpr (Track) BlockLosses{l.damping, l.friction, 0.0, 0.0}.store(in_.energy.contact_block(b));
             continue;
           }
         }
@@ -242,7 +244,7 @@ public:
           const PairBatchLosses l = evaluate_linear_walls_batched(wall_batch_, std::size_t(b) * kBlock, end);
           for (std::size_t c = std::size_t(b) * kBlock; c < end; ++c)  // unbounded planes: gap's normal
             walls.record_term(law_, store_, lists_, c, walls[a.wslots[c].wall].normal);
-          if constexpr (Track) BlockLosses{l.damping, l.friction, 0.0}.store(in_.energy.contact_block(nbp_ + b));
+          if constexpr (Track) BlockLosses{l.damping, l.friction, 0.0, 0.0}.store(in_.energy.contact_block(nbp_ + b));
           continue;
         }
       }

@@ -469,14 +469,15 @@ EnergyLedger DemSystem::energy() const
 // Version 3 added the contact memory (rolling springs, bonds) and the clumps; version 4
 // moved the slots' loads beside them (ContactLists.h) and added the recording of contact
 // forces; version 5 stores the thread setting (0: automatic) where the count was, in the
-// same layout. Version 2 to 4 states (restart files, exact specimens in core stores) are
+// same layout; version 6 adds the fragments' placement overlap to the contact memory and
+// the breakage terms to the ledger (S2). Version 2 to 5 states (restart files, exact specimens in core stores) are
 // still read, through their old layouts (LegacyState.h), and continue as they would have,
 // with their count as given.
 
 namespace {
-constexpr std::uint32_t kStateVersion = 5;
+constexpr std::uint32_t kStateVersion = 6;
 
-/// Reads the DEMSYSTM tag; returns its version (2 to 5).
+/// Reads the DEMSYSTM tag; returns its version (2 to 6).
 std::uint32_t read_state_version(std::istream& in)
 {
   char tag[8];
@@ -671,8 +672,16 @@ void DemSystem::read_state(std::istream& in)
   binary::get_vector(in, lists_.wall_offset);
   if (version >= 3) {
     binary::get(in, lists_.with_memory);
-    binary::get_vector(in, lists_.pair_memory);
-    binary::get_vector(in, lists_.wall_memory);
+    if (version >= 6) {
+      binary::get_vector(in, lists_.pair_memory);
+      binary::get_vector(in, lists_.wall_memory);
+    } else {
+      std::vector<legacy::ContactMemoryV5> pair_memory, wall_memory;
+      binary::get_vector(in, pair_memory);
+      binary::get_vector(in, wall_memory);
+      legacy::convert_memory(pair_memory, lists_.pair_memory);
+      legacy::convert_memory(wall_memory, lists_.wall_memory);
+    }
     if (lists_.with_memory &&
         (lists_.pair_memory.size() != lists_.pairs.size() || lists_.wall_memory.size() != lists_.walls.size()))
       throw binary::StateError("checkpoint: contact memory does not match the contact lists");
@@ -702,8 +711,12 @@ void DemSystem::read_state(std::istream& in)
   binary::get(in, moved2_);
   binary::get(in, time_);
   binary::get(in, steps_);
-  if (version >= 3) {
+  if (version >= 6) {
     binary::get(in, energy_.losses());
+  } else if (version >= 3) {
+    legacy::EnergyLedgerV5 old;
+    binary::get(in, old);
+    energy_.losses() = legacy::convert(old);
   } else {
     legacy::EnergyLedgerV2 old;
     binary::get(in, old);

@@ -148,17 +148,20 @@ public:
   /// momentum of the children equals the parent's times their mass fraction (exactly the
   /// parent's when mass is conserved). The parent's contact histories are dropped; all
   /// others are carried over by id. The parent's id is never reused (alive() turns false).
-  /// With `shelter_siblings`, the children of one parent share a sibling group (Types.h)
-  /// and do not touch each other until release_separated_siblings() frees the group.
+  /// With `options.release_speed` = u > 0 every contact of a child starts with its overlap
+  /// as placement overlap, released at the speed u (ContactLaw.h; needs a law with memory). With `options.shelter_siblings`, the children of one parent
+  /// share a sibling group (Types.h) and do not touch each other until
+  /// release_separated_siblings() frees the group.
   /// Refuses clump members and kinematic particles. The lists are rebuilt and forces
-  /// recomputed before it returns, so contacts() is valid at once. Nothing of this runs
-  /// in step(): a run without breakage costs the same as before.
-  std::vector<ParticleId> replace_spheres(const std::vector<Replacement>& batch, bool shelter_siblings = true);
+  /// recomputed before it returns, so contacts() is valid at once. With energy tracking,
+  /// the mechanical energy removed is booked as EnergyLedger::dissipated_breakage.
+  /// Nothing of this runs in step(): a run without breakage costs the same as before.
+  std::vector<ParticleId> replace_spheres(const std::vector<Replacement>& batch, const ReplacementOptions& options = {});
   /// The single-parent form of replace_spheres.
   std::vector<ParticleId> replace_sphere(ParticleId parent, const std::vector<Fragment>& children,
-                                         bool shelter_siblings = true)
+                                         const ReplacementOptions& options = {})
   {
-    return replace_spheres({Replacement{parent, children}}, shelter_siblings);
+    return replace_spheres({Replacement{parent, children}}, options);
   }
   /// Frees every sibling group none of whose members overlap each other any more (they
   /// interact normally from the next step); returns the number of groups freed.
@@ -333,6 +336,8 @@ private:
   void close_step(bool record);
   void refresh_index();
   bool law_has_memory() const;
+  /// Sets the placement overlap of every listed contact of `children` (sorted ids).
+  void place_fragment_contacts(const std::vector<ParticleId>& children, double release_speed);
   double law_reach() const;
   double kick_drift_clumps(double dt);
   void kick_clumps(double dt);

@@ -14,10 +14,21 @@
 // own centre of mass $x_G = \sum m_c x_c / \sum m_c$:
 // $$ v_c = v + \omega \times (x_c - x_G), \qquad \omega_c = \omega , $$
 // so $\sum m_c v_c = (\sum m_c)\,v$: linear momentum is conserved whenever mass is.
-// Children of one parent overlap each other (cube and 4-ball modes); with sheltering
-// they share a sibling group (Types.h) and ignore each other until no two of them
-// overlap, so the replacement does not create the spurious repulsion that S2 objects to.
-// The children of a sheltered parent join its group (they overlap its former siblings).
+// Children of one parent overlap each other (cube and 4-ball modes) and the neighbours
+// the parent touched. With an overlap release at speed u (the default), every contact of
+// a child starts with its overlap at placement as placement overlap $\delta_p$
+// (ContactMemory.h), which falls at the rate u: at placement the fragments exert nothing
+// on each other or their neighbours, and the force comes back over $\delta_p/u$, so the
+// replacement neither explodes (a released pair of reduced mass m* gains at most
+// $2 m^* u^2$, ContactLaw.h) nor lets the fragments pass through each other (S2's
+// criterion 2: the local stress drops at breakage, then recovers).
+// The mechanical energy the replacement removes (the parent's contacts) is booked as
+// EnergyLedger::dissipated_breakage.
+// With sheltering (the former scheme) the children of one parent share a sibling group
+// (Types.h) and ignore each other until no two of them overlap; the children of a
+// sheltered parent join its group (they overlap its former siblings). Compressed
+// siblings never stop overlapping, so they pass through each other for good: kept only
+// to reproduce the earlier runs.
 #include "dem/DemSystem.h"
 
 #include <algorithm>
@@ -27,10 +38,17 @@
 
 namespace geocomp::dem {
 
-std::vector<ParticleId> DemSystem::replace_spheres(const std::vector<Replacement>& batch, bool shelter_siblings)
+std::vector<ParticleId> DemSystem::replace_spheres(const std::vector<Replacement>& batch,
+                                                  const ReplacementOptions& options)
 {
+  const bool shelter_siblings = options.shelter_siblings;
   std::vector<ParticleId> new_ids;
   if (batch.empty()) return new_ids;
+  if (!(options.release_speed >= 0.0))
+    throw std::invalid_argument("DemSystem::replace_spheres: the overlap release speed must be >= 0");
+  if (options.release_speed > 0.0 && !law_has_memory())
+    throw std::invalid_argument("DemSystem::replace_spheres: the overlap release needs a contact law with memory "
+                                "(rolling resistance or bonds)");
   std::vector<ParticleId> parents;
   for (const Replacement& r : batch) {
     if (!alive(r.parent))
@@ -53,6 +71,7 @@ std::vector<ParticleId> DemSystem::replace_spheres(const std::vector<Replacement
 
   // (1) Histories by id, from lists that match the store.
   prepare();
+  const double mechanical_before = track_energy_ ? energy().mechanical() : 0.0;
   std::vector<ContactState> states = export_contact_state();
   auto involves_parent = [&](const ContactState& c) {
     if (std::binary_search(parents.begin(), parents.end(), c.j)) return true;
@@ -101,7 +120,36 @@ std::vector<ParticleId> DemSystem::replace_spheres(const std::vector<Replacement
   rebuild_requested_ = true;
   invalidate();
   prepare();
+  if (options.release_speed > 0.0) {
+    std::vector<ParticleId> sorted = new_ids;
+    std::sort(sorted.begin(), sorted.end());
+    place_fragment_contacts(sorted, options.release_speed);
+    invalidate();
+    prepare();
+  }
+  if (track_energy_) energy_.losses().dissipated_breakage += mechanical_before - energy().mechanical();
   return new_ids;
+}
+
+void DemSystem::place_fragment_contacts(const std::vector<ParticleId>& children, double release_speed)
+{
+  auto is_child = [&](Index k) { return std::binary_search(children.begin(), children.end(), store_.id[k]); };
+  auto place = [&](ContactMemory& m, double overlap) {
+    if (!(overlap > 0.0)) return;
+    m.placement = overlap;
+    m.placement_rate = release_speed;
+  };
+  for (std::size_t c = 0; c < lists_.pairs.size(); ++c) {
+    const PairSlot& s = lists_.pairs[c];
+    if (!is_child(s.i) && !is_child(s.j)) continue;
+    place(lists_.pair_memory[c], store_.radius[s.i] + store_.radius[s.j] - (store_.x[s.j] - store_.x[s.i]).norm());
+  }
+  for (std::size_t c = 0; c < lists_.walls.size(); ++c) {
+    const WallSlot& s = lists_.walls[c];
+    if (!is_child(s.particle)) continue;
+    Vec3 n;
+    place(lists_.wall_memory[c], store_.radius[s.particle] - walls_[s.wall].gap(store_.x[s.particle], n));
+  }
 }
 
 std::size_t DemSystem::release_separated_siblings()

@@ -8,9 +8,10 @@ namespace geocomp::dem {
 void EnergyAccounting::add_contact_blocks(std::size_t n)
 {
   for (std::size_t b = 0; b < n; ++b) {
-    losses_.dissipated_damping += blocks_[3 * b];
-    losses_.dissipated_friction += blocks_[3 * b + 1];
-    losses_.dissipated_bonds += blocks_[3 * b + 2];
+    losses_.dissipated_damping += blocks_[kBlockTerms * b];
+    losses_.dissipated_friction += blocks_[kBlockTerms * b + 1];
+    losses_.dissipated_bonds += blocks_[kBlockTerms * b + 2];
+    losses_.release_work += blocks_[kBlockTerms * b + 3];
   }
 }
 

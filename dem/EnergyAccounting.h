@@ -24,22 +24,28 @@
 
 namespace geocomp::dem {
 
+/// Entries per block of the fixed-block reduction.
+constexpr std::size_t kBlockTerms = 4;
+
 /// The energy a block of slots dissipated, summed in slot order; `store` writes the
-/// block's three entries (damping, friction, bonds) of the fixed-block reduction.
+/// block's entries (damping, friction, bonds, placement-release work) of the fixed-block
+/// reduction.
 struct BlockLosses
 {
-  double damping = 0.0, friction = 0.0, bonds = 0.0;
+  double damping = 0.0, friction = 0.0, bonds = 0.0, release = 0.0;
   void add(const ContactForce& f)
   {
     damping += f.damping_loss;
     friction += f.friction_loss;
     bonds += f.bond_loss;
+    release += f.release_work;
   }
   void store(double* block) const
   {
     block[0] = damping;
     block[1] = friction;
     block[2] = bonds;
+    block[3] = release;
   }
 };
 
@@ -63,10 +69,10 @@ public:
   EnergyLedger& losses() { return losses_; }
   void add_local(double loss) { losses_.dissipated_local += loss; }
 
-  /// Zeroes the three entries of each of n contact blocks (pair blocks, then wall blocks).
-  void begin_contact_blocks(std::size_t n) { blocks_.assign(3 * n, 0.0); }
-  /// Block b's three entries (BlockLosses::store).
-  double* contact_block(std::size_t b) { return &blocks_[3 * b]; }
+  /// Zeroes the entries of each of n contact blocks (pair blocks, then wall blocks).
+  void begin_contact_blocks(std::size_t n) { blocks_.assign(kBlockTerms * n, 0.0); }
+  /// Block b's entries (BlockLosses::store).
+  double* contact_block(std::size_t b) { return &blocks_[kBlockTerms * b]; }
   /// Adds the n blocks' losses into the ledger, in block order.
   void add_contact_blocks(std::size_t n);
   /// Drops the scratch (after a checkpoint is read).

@@ -9,6 +9,10 @@
 // and S3 bonds when the law has them), $E_{grav} = -\sum m g\cdot x$; clumps count as rigid
 // bodies, $\tfrac12 Mv_G^2 + \tfrac12 L_b\cdot I^{-1}L_b$.
 // Dissipation is accumulated per step only while energy tracking is on.
+// Breakage (S2) adds two terms: the mechanical energy a replacement removes (the parent's
+// contacts go, the fragments' placement overlaps store nothing at first) counts as
+// dissipated, and the work of the gradual placement-overlap release (ContactLaw.h) as an
+// input beside the walls' work.
 #pragma once
 
 namespace geocomp::dem {
@@ -27,13 +31,18 @@ struct EnergyLedger
   double elastic_rolling = 0.0;      ///< rolling springs (S2)
   double elastic_bonds = 0.0;        ///< S3 bond springs + adhesion potential (may be < 0)
   double wall_work = 0.0;            ///< work done by the walls on the particles
+  double dissipated_breakage = 0.0;  ///< mechanical energy removed by fragment replacement (S2)
+  double release_work = 0.0;         ///< work of the fragments' placement-overlap release (S2)
 
   double kinetic() const { return kinetic_translational + kinetic_rotational; }
   double elastic() const { return elastic_normal + elastic_tangential + elastic_rolling + elastic_bonds; }
   double mechanical() const { return kinetic() + elastic() + gravitational; }
-  double dissipated() const { return dissipated_damping + dissipated_friction + dissipated_local + dissipated_bonds; }
-  /// Conserved quantity: mechanical + dissipated - wall work.
-  double balance() const { return mechanical() + dissipated() - wall_work; }
+  double dissipated() const
+  {
+    return dissipated_damping + dissipated_friction + dissipated_local + dissipated_bonds + dissipated_breakage;
+  }
+  /// Conserved quantity: mechanical + dissipated - wall work - release work.
+  double balance() const { return mechanical() + dissipated() - wall_work - release_work; }
 };
 
 }  // namespace geocomp::dem

@@ -19,6 +19,13 @@ struct Fragment
   double density = 0.0;
 };
 
+/// How DemSystem::replace_spheres puts the children in.
+struct ReplacementOptions
+{
+  bool shelter_siblings = false;     ///< children of one parent ignore each other until apart (former scheme)
+  double release_speed = 0.05;        ///< u [m/s]: placement overlaps fall at u (0: released at once)
+};
+
 /// One parent sphere (by stable id) and the children that replace it.
 struct Replacement
 {

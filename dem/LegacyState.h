@@ -114,4 +114,55 @@ inline void convert(const SlotV3& o, WallSlot& s, SlotLoad& load)
   convert_history(o, s, load);
 }
 
+// Versions 3 to 5: contact memory without the fragments' placement overlap and a ledger
+// without the breakage terms (S2 overlap release, version 6).
+struct ContactMemoryV5
+{
+  Vec3 rolling, bond;
+  double bond_origin;
+  std::uint32_t state;
+};
+
+inline ContactMemory convert(const ContactMemoryV5& o)
+{
+  ContactMemory m;
+  m.rolling = o.rolling;
+  m.bond = o.bond;
+  m.bond_origin = o.bond_origin;
+  m.state = o.state;
+  return m;
+}
+
+struct EnergyLedgerV5
+{
+  double kinetic_translational, kinetic_rotational, elastic_normal, elastic_tangential, gravitational,
+    dissipated_damping, dissipated_friction, dissipated_local, dissipated_bonds, elastic_rolling, elastic_bonds,
+    wall_work;
+};
+
+inline EnergyLedger convert(const EnergyLedgerV5& o)
+{
+  EnergyLedger e;
+  e.kinetic_translational = o.kinetic_translational;
+  e.kinetic_rotational = o.kinetic_rotational;
+  e.elastic_normal = o.elastic_normal;
+  e.elastic_tangential = o.elastic_tangential;
+  e.gravitational = o.gravitational;
+  e.dissipated_damping = o.dissipated_damping;
+  e.dissipated_friction = o.dissipated_friction;
+  e.dissipated_local = o.dissipated_local;
+  e.dissipated_bonds = o.dissipated_bonds;
+  e.elastic_rolling = o.elastic_rolling;
+  e.elastic_bonds = o.elastic_bonds;
+  e.wall_work = o.wall_work;
+  return e;
+}
+
+/// A memory array of version 3 to 5 as the current struct.
+inline void convert_memory(const std::vector<ContactMemoryV5>& old, std::vector<ContactMemory>& out)
+{
+  out.resize(old.size());
+  for (std::size_t c = 0; c < old.size(); ++c) out[c] = convert(old[c]);
+}
+
 }  // namespace geocomp::dem::legacy

@@ -51,8 +51,12 @@ void declare(ParameterHandler &prm)
   prm.declare_entry("reference size", "29", Patterns::Double(0.0), "d0 [mm] of the Weibull size effect.");
   prm.declare_entry("check interval", "20", Patterns::Integer(1), "Steps between checks of the criterion.");
   prm.declare_entry("seed", "1", Patterns::Integer(0), "Seed of the fragment generator.");
-  prm.declare_entry("shelter siblings", "true", Patterns::Bool(),
-                    "Children of one parent ignore each other until they no longer overlap.");
+  prm.declare_entry("overlap release speed", "0.05", Patterns::Double(0.0),
+                    "u [m/s]: the fragments' overlaps at placement fall to zero at this speed (0: at once); "
+                    "the kinetic energy a released pair gains is at most 2 m* u^2.");
+  prm.declare_entry("shelter siblings", "false", Patterns::Bool(),
+                    "Former scheme: children of one parent ignore each other until they no longer overlap "
+                    "(compressed, they pass through each other).");
   prm.leave_subsection();
   prm.enter_subsection("single particle");
   prm.declare_entry("particles", "100", Patterns::Integer(1, 100000), "Number of particles crushed (S2: 100).");
@@ -143,7 +147,8 @@ CrushCase parse_crush_case(const std::string &text, const std::string &path)
   b.criterion.reference_size = 1e-3 * prm.get_double("reference size");
   b.interval = std::uint64_t(prm.get_integer("check interval"));
   b.seed = std::uint64_t(prm.get_integer("seed"));
-  b.shelter_siblings = prm.get_bool("shelter siblings");
+  b.replacement.shelter_siblings = prm.get_bool("shelter siblings");
+  b.replacement.release_speed = prm.get_double("overlap release speed");
   prm.leave_subsection();
   if (b.rules.minimum_size > b.rules.breakage_limit)
     fail("breakage/minimum size", "d_M <= d_L (breakage limit); S2 uses d_M/d_L = 0.25");
