@@ -7,14 +7,6 @@
 namespace geocomp::compare {
 
 namespace {
-std::string percent(double fraction)
-{
-  std::ostringstream s;
-  s.precision(3);
-  s << fraction * 100.0 << " %";
-  return s.str();
-}
-
 NamedState elastic_limit(const MetricSet &m)
 {
   NamedState b{"B", "elastic limit (S0: residual strain after unloading reaches 1 %), " +
@@ -33,7 +25,7 @@ NamedState elastic_limit(const MetricSet &m)
 NamedState post_peak(const Curve &c, const std::vector<double> &ys, std::size_t ipk, double y0,
                      const NamedStateOptions &o)
 {
-  NamedState d{"D", "first sample past the peak whose stress dropped by " + percent(o.post_peak_drop) +
+  NamedState d{"D", "first sample past the peak whose stress dropped by " + percent_label(o.post_peak_drop) +
                       " of the peak rise"};
   const double limit = ys[ipk] - o.post_peak_drop * (ys[ipk] - y0);
   for (std::size_t i = ipk + 1; i < ys.size(); ++i)
@@ -44,7 +36,7 @@ NamedState post_peak(const Curve &c, const std::vector<double> &ys, std::size_t 
       return d;
     }
   if (ipk + 1 < ys.size()) {
-    d.definition = "end of the main path (the stress never dropped by " + percent(o.post_peak_drop) +
+    d.definition = "end of the main path (the stress never dropped by " + percent_label(o.post_peak_drop) +
                    " of the peak rise past the peak)";
     d.found = true;
     d.strain = c.x.back();
@@ -88,6 +80,14 @@ std::vector<NamedState> named_states(const Curve &c, const MetricSet &m, const O
     out.push_back(s);
   }
   return out;
+}
+
+std::string percent_label(double fraction)
+{
+  std::ostringstream s;
+  s.precision(3);
+  s << fraction * 100.0 << " %";
+  return s.str();
 }
 
 } // namespace geocomp::compare

@@ -43,4 +43,7 @@ struct NamedStateOptions {
 std::vector<NamedState> named_states(const Curve &curve, const MetricSet &metrics, const OnsetEstimate *onset,
                                      const NamedStateOptions &options = {});
 
+/// A strain fraction as a label with three significant digits ("5.81 %").
+std::string percent_label(double fraction);
+
 } // namespace geocomp::compare

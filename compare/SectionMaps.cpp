@@ -11,14 +11,6 @@
 namespace geocomp::compare {
 
 namespace {
-std::string percent(double fraction)
-{
-  std::ostringstream s;
-  s.precision(3);
-  s << fraction * 100.0 << " %";
-  return s.str();
-}
-
 double largest_magnitude(const std::vector<double> &v)
 {
   double m = 0.0;
@@ -44,8 +36,8 @@ MapPanel locate(const StrainedSection &s, const std::string &engine, double stra
       index = k;
   p.strain = s.strains[index];
   if (!(std::abs(p.strain - strain) <= max_gap)) {
-    p.missing = engine + ": no recorded mid-section within " + percent(max_gap) + " strain of " + percent(strain) +
-                " (nearest " + percent(p.strain) + ")";
+    p.missing = engine + ": no recorded mid-section within " + percent_label(max_gap) + " strain of " + percent_label(strain) +
+                " (nearest " + percent_label(p.strain) + ")";
     return p;
   }
   p.present = true;
