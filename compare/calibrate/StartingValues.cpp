@@ -277,6 +277,17 @@ StartingValues starting_values(const ContinuumParameters &case_section, const st
     return {case_section, {"starting values: the case's"}};
   const StartingValues estimates = closed_form_start(case_section, targets);
   StartingValues out{free.apply(case_section, free.values(estimates.parameters)), {}};
+  // Mohr-Coulomb needs psi <= phi at every kappa: a free dilatancy knot starts at most at
+  // the friction angle there (the fit keeps to that range, Calibration.cpp).
+  for (const FreeParameter &f : free.list())
+    if (f.family == FreeParameter::Family::Dilatancy) {
+      auto &[kappa, psi] = out.parameters.dilatancy_angle.points[f.knot];
+      if (psi > out.parameters.friction_angle(kappa)) {
+        psi = out.parameters.friction_angle(kappa);
+        out.notes.push_back("closed-form estimate: " + f.name + " lowered to the friction angle at its kappa (" +
+                            str(psi) + " deg): Mohr-Coulomb needs psi <= phi");
+      }
+    }
   for (const auto &note : estimates.notes)
     out.notes.push_back("closed-form estimate (the start of the free parameters only): " + note);
   std::string fixed;

@@ -107,8 +107,13 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   for (const auto &[k, psi] : p.dilatancy_angle.points)
     if (psi < 0 || psi >= 90)
       r.fail("continuum/dilatancy angle", "expected angles in [0, 90) degrees");
-  for (const auto &[k, psi] : p.dilatancy_angle.points)
-    if (psi > p.friction_angle(k) + 1e-12)
+  // Both tables are piecewise linear: psi <= phi everywhere when it holds at every knot of either.
+  std::vector<double> knots;
+  for (const HardeningTable *t : {&p.dilatancy_angle, &p.friction_angle})
+    for (const auto &point : t->points)
+      knots.push_back(point.first);
+  for (double k : knots)
+    if (p.dilatancy_angle(k) > p.friction_angle(k) + 1e-12)
       r.fail("continuum/dilatancy angle", "psi must not exceed phi at the same kappa (got psi > phi at kappa = " +
                                             std::to_string(k) + ")");
   return p;

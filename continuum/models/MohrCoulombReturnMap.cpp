@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace geocomp::continuum {
 
@@ -19,6 +21,13 @@ void MohrCoulombParameters::validate() const {
     throw std::invalid_argument("Mohr-Coulomb: dilatancy angle must lie in [0, pi/2)");
   if (!(apex_min_dilatancy > 0.0))
     throw std::invalid_argument("Mohr-Coulomb: apex_min_dilatancy must be > 0");
+  // psi <= phi at every kappa: both tables are piecewise linear, so at every knot of either.
+  std::vector<double> knots = friction_angle.breakpoints();
+  knots.insert(knots.end(), dilatancy_angle.breakpoints().begin(), dilatancy_angle.breakpoints().end());
+  for (double kappa : knots)
+    if (dilatancy_angle(kappa) > friction_angle(kappa) + 1e-12)
+      throw std::invalid_argument("Mohr-Coulomb: the dilatancy angle exceeds the friction angle at kappa = " +
+                                  std::to_string(kappa));
 }
 
 MohrCoulombReturnMap::MohrCoulombReturnMap(MohrCoulombParameters parameters)

@@ -54,7 +54,7 @@ struct MohrCoulombParameters {
   PiecewiseLinear dilatancy_angle;  ///< psi(kappa) [rad], in [0, pi/2)
   double apex_min_dilatancy = 1e-3; ///< floor on psi in the apex return [rad]
 
-  /// Throws std::invalid_argument when a value is out of range.
+  /// Throws std::invalid_argument when a value is out of range, or psi > phi at some kappa.
   void validate() const;
 };
 

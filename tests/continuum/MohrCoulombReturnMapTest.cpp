@@ -178,3 +178,18 @@ TEST(MohrCoulombReturnMap, RandomTrialStressesLandOnSurfaceWithFlowConsistentWit
       EXPECT_GT(count[reg], 100) << "too few random samples in " << to_string(reg);
   }
 }
+
+TEST(MohrCoulombReturnMap, RefusesTablesWhoseDilatancyExceedsTheFrictionAngleBetweenTheDilatancyKnots) {
+  // psi <= phi at both psi knots (0 and 0.1), but phi dips to 8 deg at kappa = 0.05 where the
+  // psi table passes 10 deg: a check at the psi knots alone misses it (calibration steps there).
+  const double deg = M_PI / 180.0;
+  MohrCoulombParameters p;
+  p.youngs_modulus = 1.0e9;
+  p.poisson_ratio = 0.27;
+  p.cohesion = PiecewiseLinear(1e5);
+  p.friction_angle = PiecewiseLinear({0.0, 0.05, 0.1}, {30 * deg, 8 * deg, 30 * deg});
+  p.dilatancy_angle = PiecewiseLinear({0.0, 0.1}, {0.0, 20 * deg});
+  EXPECT_THROW(MohrCoulombReturnMap{p}, std::invalid_argument);
+  p.friction_angle = PiecewiseLinear({0.0, 0.05, 0.1}, {30 * deg, 12 * deg, 30 * deg});
+  EXPECT_NO_THROW(MohrCoulombReturnMap{p});
+}
