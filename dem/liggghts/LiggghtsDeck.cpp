@@ -138,7 +138,8 @@ std::string geometry_section(const Packing &p, const LiggghtsContact &law)
   return o.str();
 }
 
-/// Target strain of kinematic axis a at program time T (StageControl::strain, direction +1).
+/// Target strain of kinematic axis a at program time T (StageControl::strain; direction +1
+/// loading, -1 an unloading branch: every rate reversed from the anchor t0, e0).
 std::string strain_expression(const Stage &s, int a, const std::string &T, double direction)
 {
   const std::string dt = "(" + num(direction) + "*(" + T + "-v_t0))";
