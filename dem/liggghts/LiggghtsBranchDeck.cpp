@@ -70,7 +70,7 @@ std::string branch_deck(const Stage &s, int stage, int trigger, long long steps_
     << "variable late equal v_t>=v_tend-0.5*v_dt\n"
     // the next run's steps: a whole interval, or the secant's step to the target, at least 1
     << "variable slope equal (v_aprev-v_anow)/v_nlast\n"
-    << "variable npred equal ceil((v_anow-v_target)/(v_slope+(v_slope<=0)))\n"
+    << "variable npred equal ceil((v_anow-v_target)/(v_slope+(v_slope<=0)*1e300))\n"
     << "variable nfull equal (v_slope<=0)*" << S << "+(v_slope>0)*(" << S << "-(" << S
     << "-v_npred)*(v_npred<" << S << "))\n"
     << "variable nleft equal floor((v_tend-v_t)/v_dt+0.5)\n"
