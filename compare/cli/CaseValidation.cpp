@@ -38,7 +38,7 @@ void validate_engine(const std::string &name, const CaseDescription &c)
   }
   if (name == "liggghts") {
     dem::check_specimen(c);
-    check_liggghts_case(c, true);
+    check_liggghts_case(c);
     return;
   }
   throw CaseError(c.file, "engines", "the '" + name + "' engine is not available in this build");

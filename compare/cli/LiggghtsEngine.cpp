@@ -65,18 +65,11 @@ std::vector<std::string> without_mpi_runtime()
 }
 } // namespace
 
-void check_liggghts_case(const CaseDescription &c, bool engine)
+void check_liggghts_case(const CaseDescription &c)
 {
   const dem::Packing probe = probe_packing(c);
   dem::map_contact_to_liggghts(dem::LiggghtsContactInput{c.file, &c.contact, &c.dem, &probe});
   dem::check_liggghts_program(c.program, c.file);
-  if (!engine)
-    return;
-  for (std::size_t k = 0; k < c.program.stages.size(); ++k)
-    if (!c.program.stages[k].unload_at.empty())
-      throw CaseError(c.file, "program/stage " + std::to_string(k + 1) + "/unload at",
-                      "the liggghts engine does not play unloading branches (docs/liggghts.md): remove the entry "
-                      "or 'liggghts' from the engines");
 }
 
 void require_liggghts(const CaseDescription &c, const LiggghtsLaunch &launch)
@@ -93,7 +86,7 @@ void require_liggghts(const CaseDescription &c, const LiggghtsLaunch &launch)
 
 LiggghtsExportSummary export_liggghts_case(const CaseDescription &c, const fs::path &out, const fs::path &cache)
 {
-  check_liggghts_case(c, false); // before the specimen is prepared
+  check_liggghts_case(c); // before the specimen is prepared
   const std::unique_ptr<dem::DemEngine> engine = make_dem_engine(c, cache);
   const dem::DemSystem &system = engine->system();
   const dem::Packing p = moving_packing(system, c.specimen.density);
@@ -123,7 +116,8 @@ std::string liggghts_error_line(const fs::path &file)
   return "";
 }
 
-void run_liggghts_deck(const fs::path &dir, const LiggghtsLaunch &launch)
+void run_liggghts_deck(const fs::path &dir, const LiggghtsLaunch &launch, const std::string &deck,
+                       const std::string &screen_file)
 {
   std::vector<std::string> argv = without_mpi_runtime();
   if (launch.ranks > 1) {
@@ -132,40 +126,51 @@ void run_liggghts_deck(const fs::path &dir, const LiggghtsLaunch &launch)
       argv.push_back("--allow-run-as-root");
   }
   argv.push_back(launch.program);
-  for (const char *a : {"-in", "in.geocomp", "-log", kLiggghtsLogFile})
-    argv.push_back(a);
+  const std::string log = deck == "in.geocomp" ? std::string(kLiggghtsLogFile) : "log." + deck.substr(3);
+  argv.insert(argv.end(), {"-in", deck, "-log", log});
   SubprocessOptions o;
   o.directory = dir;
-  o.stdout_file = dir / kLiggghtsScreenFile;
+  o.stdout_file = dir / screen_file;
   o.stderr_file = o.stdout_file;
   const SubprocessResult run = run_subprocess(argv, o);
-  const fs::path screen = dir / kLiggghtsScreenFile;
+  const fs::path screen = dir / screen_file;
   if (!run.started)
     throw LiggghtsRefused("LIGGGHTS did not start in " + dir.string() + ": " + run.error);
   const std::string error = liggghts_error_line(screen);
   if (!error.empty())
-    throw LiggghtsRefused("LIGGGHTS refused the deck " + (dir / "in.geocomp").string() + ": " + error + " (" +
+    throw LiggghtsRefused("LIGGGHTS refused the deck " + (dir / deck).string() + ": " + error + " (" +
                           screen.string() + ")");
   if (run.exit_code != 0)
     throw LiggghtsRefused("LIGGGHTS ended with " +
                           (run.signal ? "signal " + std::to_string(run.signal) : "exit " + std::to_string(run.exit_code)) +
-                          " on " + (dir / "in.geocomp").string() + "; its output: " + screen.string());
+                          " on " + (dir / deck).string() + "; its output: " + screen.string());
 }
 
 Response run_liggghts(const CaseDescription &c, const fs::path &dir, const LiggghtsLaunch &launch, Response *partial)
 {
   require_liggghts(c, launch);
   const fs::path deck = dir / kLiggghtsDeckFolder;
-  std::error_code ignored; // a previous run's samples must not be read as this one's
-  fs::remove(deck / "samples.txt", ignored);
-  fs::remove(deck / "stages.txt", ignored);
+  std::error_code ignored; // a previous run's samples and branches must not be read as this one's
+  for (const char *file : {"samples.txt", "stages.txt", "branches.txt"})
+    fs::remove(deck / file, ignored);
+  if (fs::is_directory(deck, ignored))
+    for (const fs::directory_entry &e : fs::directory_iterator(deck, ignored))
+      if (e.path().filename().string().rfind("branch_", 0) == 0) // restart and state files
+        fs::remove(e.path(), ignored);
   const dem::LiggghtsDeckSummary s = export_liggghts_case(c, deck, dir).deck;
   std::ostringstream what;
   what << "liggghts: " << s.steps_per_sample << " steps of " << s.time_step << " s per sample, "
        << launch.ranks << " rank(s), in " << deck.string();
   log::info(what.str());
   try {
-    run_liggghts_deck(deck, launch);
+    run_liggghts_deck(deck, launch, "in.geocomp", kLiggghtsScreenFile);
+    // The unloading branches the main run started, each a run of its own from its restart.
+    for (const std::string &branch : dem::liggghts_branch_decks(deck)) {
+      log::info("liggghts: unloading branch " + branch.substr(3));
+      run_liggghts_deck(deck, launch, branch, "liggghts." + branch.substr(3) + ".out");
+    }
+  } catch (const dem::LiggghtsSamplesError &e) {
+    throw LiggghtsRefused(std::string("LIGGGHTS' branches cannot be read: ") + e.what());
   } catch (const LiggghtsRefused &) {
     try {
       if (partial)

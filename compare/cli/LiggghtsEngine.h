@@ -9,6 +9,9 @@
 //      without a shell (common/Subprocess.h), under `mpirun -np N` when N ranks are asked for
 //      (`--allow-run-as-root` when this process is root), its screen output kept in
 //      <output>/liggghts/liggghts.out and its log in log.liggghts;
+//   2b. the unloading branches the main run started (branches.txt), each its own LIGGGHTS
+//      run of in.branch_<stage>_<trigger> from the restart file written at its trigger, in
+//      the order of their ids, screen output in liggghts.branch_<stage>_<trigger>.out;
 //   3. its samples read back as the Response of engine "liggghts" (dem/liggghts/LiggghtsSamples.h).
 // EngineRun.h writes the Response as <output>/liggghts.h5 with /meta, like every engine, and
 // reuses it while it is up to date. A missing program is bad input (CaseError, exit 2, the
@@ -38,10 +41,9 @@ inline constexpr const char *kLiggghtsLogFile = "log.liggghts";
 inline constexpr const char *kLiggghtsDeckFolder = "liggghts";
 
 /// Every case entry the deck cannot carry, refused as `export liggghts` refuses it (CaseError
-/// naming the entry): the contact law's mapping and the program's stop conditions; with
-/// `engine`, also the unloading branches, which the deck does not play (`pair` refuses them
-/// rather than leave them out; the export command says it leaves them out).
-void check_liggghts_case(const CaseDescription &c, bool engine);
+/// naming the entry): the contact law's mapping, the program's stop conditions and branch
+/// triggers ("peak", `locate elastic limit`: LiggghtsDeck.h).
+void check_liggghts_case(const CaseDescription &c);
 
 /// CaseError (exit 2) naming the Debian package when `launch`'s programs are not installed.
 void require_liggghts(const CaseDescription &c, const LiggghtsLaunch &launch);
@@ -63,9 +65,11 @@ struct LiggghtsRefused : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Runs the deck in.geocomp of `dir` to its end; throws LiggghtsRefused when LIGGGHTS
-/// prints an ERROR line, exits non-zero or cannot be started.
-void run_liggghts_deck(const std::filesystem::path &dir, const LiggghtsLaunch &launch);
+/// Runs the deck `deck` of `dir` (in.geocomp, or a branch's in.branch_S_K) to its end, its
+/// screen output into `screen_file`; throws LiggghtsRefused when LIGGGHTS prints an ERROR
+/// line, exits non-zero or cannot be started.
+void run_liggghts_deck(const std::filesystem::path &dir, const LiggghtsLaunch &launch,
+                       const std::string &deck = "in.geocomp", const std::string &screen_file = kLiggghtsScreenFile);
 
 /// The first line of `file` that LIGGGHTS starts with "ERROR" (empty: none).
 std::string liggghts_error_line(const std::filesystem::path &file);

@@ -23,7 +23,9 @@ std::string liggghts_export_usage()
          "samples.txt every sample interval. Run it in DIR: `liggghts -in in.geocomp`, or\n"
          "`mpirun -np N liggghts -in in.geocomp`. A contact or program entry that LIGGGHTS cannot\n"
          "play is refused (exit 2) naming it; docs/liggghts.md tabulates the mapping. Unloading\n"
-         "branches are not played yet.\n";
+         "branches (`unload at`): the main run writes branch_S_K.restart at each trigger and a\n"
+         "`start` line in branches.txt; then run each started branch's deck in DIR, in the order\n"
+         "of branches.txt: `liggghts -in in.branch_S_K` (S stage, K trigger, 1-based).\n";
 }
 
 int export_liggghts(const std::vector<std::string> &args)

@@ -1,4 +1,5 @@
 #include "dem/liggghts/LiggghtsDeck.h"
+#include "dem/liggghts/LiggghtsDeckParts.h"
 
 #include "common/AtomicFile.h"
 #include "common/case/CaseError.h"
@@ -11,10 +12,7 @@ namespace geocomp::dem {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-const char *const kAxis = "xyz";
-const char *const kWall[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+namespace deck {
 
 std::string num(double v)
 {
@@ -34,6 +32,7 @@ void write_text(const fs::path &file, const std::string &text)
   });
 }
 
+namespace {
 /// Face w (xlo..zhi) of the box as two triangles reaching a quarter edge beyond it.
 std::string face_stl(const Packing &p, int w)
 {
@@ -57,6 +56,7 @@ std::string face_stl(const Packing &p, int w)
   }
   return s + "endsolid " + kWall[w] + "\n";
 }
+} // namespace
 
 /// The deck's condition for one stop condition, or CaseError for one it cannot test.
 std::string condition_expression(const Condition &c, const std::string &where, const std::string &file)
@@ -126,13 +126,23 @@ std::string geometry_section(const Packing &p, const LiggghtsContact &law)
        "variable smax equal 0.5*(v_sx+0.5*(v_sy+v_sz+abs(v_sy-v_sz))+abs(v_sx-0.5*(v_sy+v_sz+abs(v_sy-v_sz))))\n"
        "variable smin equal 0.5*(v_sx+0.5*(v_sy+v_sz-abs(v_sy-v_sz))-abs(v_sx-0.5*(v_sy+v_sz-abs(v_sy-v_sz))))\n"
        "variable tau_max equal 0.5*(v_smax-v_smin)\n";
+  // The shear stresses, symmetrised: sigma_ab = 1/2 (sigma_ab + sigma_ba), sigma_ba from the
+  // b-forces on the walls normal to a (the unloading branches' deviator needs them).
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3;
+    const std::string x(1, kAxis[a]), y(1, kAxis[b]);
+    o << "variable s" << x << y << " equal -0.5*((f_w_" << x << "hi[" << b + 1 << "]-f_w_" << x << "lo[" << b + 1
+      << "])/(2*v_A" << x << ")+(f_w_" << y << "hi[" << a + 1 << "]-f_w_" << y << "lo[" << a + 1 << "])/(2*v_A" << y
+      << "))\n";
+  }
   return o.str();
 }
 
-/// Target strain of kinematic axis a at program time T (StageControl::strain, direction +1).
-std::string strain_expression(const Stage &s, int a, const std::string &T)
+/// Target strain of kinematic axis a at program time T (StageControl::strain; direction +1
+/// loading, -1 an unloading branch: every rate reversed from the anchor t0, e0).
+std::string strain_expression(const Stage &s, int a, const std::string &T, double direction)
 {
-  const std::string dt = "(" + T + "-v_t0)";
+  const std::string dt = "(" + num(direction) + "*(" + T + "-v_t0))";
   if (!s.isochoric)
     return "(v_e0" + std::string(1, kAxis[a]) + "+" + num(s.axes[a].value) + "*" + dt + ")";
   const std::string ex = "(v_e0x-" + num(s.isochoric_rate) + "*" + dt + ")";
@@ -156,7 +166,7 @@ std::string keep_forces()
 /// The column names of samples.txt and the print text of one row.
 std::pair<std::string, std::string> sample_columns()
 {
-  std::string cols = "t stage", vals = "${t} ${stage}";
+  std::string cols = "t stage branch", vals = "${t} ${stage} ${branch}";
   for (const char *v : {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi", "Lx", "Ly", "Lz", "sx", "sy", "sz", "ke", "erot"}) {
     cols += std::string(" ") + v;
     vals += std::string(" ${") + v + "}";
@@ -192,6 +202,65 @@ std::string servo_variables(char x, double goal, const LiggghtsDeckInput &in)
   return o.str();
 }
 
+std::string kinematic_and_servo_variables(const Stage &s, double direction, const LiggghtsDeckInput &in)
+{
+  std::ostringstream o;
+  std::string kin = "0";
+  for (int a = 0; a < 3; ++a)
+    if (s.kinematic(a)) {
+      const std::string X(1, kAxis[a]);
+      o << "variable v" << X << " equal 0.5*(v_L0" << X << "*(1+"
+        << strain_expression(s, a, "(step-1)*v_dt", direction) << ")-v_L" << X << ")/v_dt\n";
+      kin = "0.5*(" + kin + "+abs(v_v" + X + ")+abs(" + kin + "-abs(v_v" + X + ")))"; // max
+    }
+  const std::string cap = num(in.servo.max_velocity), ratio = num(in.servo.kinematic_speed_ratio);
+  o << "variable vkin equal " << kin << "\n"
+    << "variable vmax equal 0.5*(" << cap << "+" << ratio << "*v_vkin+abs(" << cap << "-" << ratio << "*v_vkin))\n";
+  for (int a = 0; a < 3; ++a)
+    if (!s.kinematic(a))
+      o << servo_variables(kAxis[a], s.axes[a].value, in);
+  return o.str();
+}
+
+std::string branch_name(int stage, int trigger)
+{
+  return "branch_" + std::to_string(stage) + "_" + std::to_string(trigger);
+}
+
+namespace {
+/// The block after each main-path sample that fires trigger k of stage `index` once: the
+/// branch gets the next id, the run writes a restart file and the state the branch deck
+/// needs beside it (LiggghtsBranchDeck.cpp), and branches.txt says where it left.
+std::string trigger_block(const Stage &s, int index, int k, const LiggghtsDeckInput &in)
+{
+  const std::string where = "program/stage " + std::to_string(index) + "/unload at";
+  const std::string tag = std::to_string(index) + "_" + std::to_string(k + 1);
+  const std::string name = branch_name(index, k + 1);
+  std::ostringstream o;
+  o << "variable trig" << tag << " equal " << condition_expression(s.unload_at[k].condition, where, in.case_file)
+    << "\n"
+    << "if \"${fired" << tag << "} > 0 || ${trig" << tag << "} == 0\" then \"jump SELF skip" << tag << "\"\n"
+    << "variable nbranch equal ${nbranch}+1\nvariable fired" << tag << " equal 1\n"
+    << "write_restart " << name << ".restart\n";
+  std::vector<std::string> state = {"variable branch equal ${nbranch}", "variable nrun equal ${nowstep}",
+                                    "variable t0 equal ${t}"};
+  for (int w = 0; w < 6; ++w)
+    state.push_back(std::string("variable kF_") + kWall[w] + " equal ${kF_" + kWall[w] + "}");
+  for (const char *v : {"ex", "ey", "ez"})
+    state.push_back(std::string("variable e0") + v[1] + " equal ${" + v + "}");
+  for (const char *v : {"sx", "sy", "sz", "sxy", "syz", "szx"}) {
+    state.push_back(std::string("variable O") + v + " equal ${" + v + "}");  // where the branch leaves
+    state.push_back(std::string("variable S") + v + " equal ${S0" + v + "}"); // where the stage began
+  }
+  state.push_back("variable taustart equal ${tau_max}");
+  for (std::size_t i = 0; i < state.size(); ++i)
+    o << "print \"" << state[i] << "\" " << (i ? "append " : "file ") << name << ".state screen no\n";
+  o << "print \"start ${nbranch} " << index - 1 << " " << k << " ${t}\" append branches.txt screen no\n"
+    << "label skip" << tag << "\n";
+  return o.str();
+}
+} // namespace
+
 std::string stage_section(const Stage &s, int index, long long steps_per_sample, double dt,
                           const LiggghtsDeckInput &in)
 {
@@ -201,20 +270,13 @@ std::string stage_section(const Stage &s, int index, long long steps_per_sample,
     << "variable stage equal " << index - 1 << "\n"
     << "variable n0 equal ${nowstep}\nvariable t0 equal ${t}\n"
     << "variable e0x equal ${ex}\nvariable e0y equal ${ey}\nvariable e0z equal ${ez}\n";
-  std::string kin = "0";
-  for (int a = 0; a < 3; ++a)
-    if (s.kinematic(a)) {
-      const std::string X(1, kAxis[a]);
-      o << "variable v" << X << " equal 0.5*(v_L0" << X << "*(1+" << strain_expression(s, a, "(step-1)*v_dt")
-        << ")-v_L" << X << ")/v_dt\n";
-      kin = "0.5*(" + kin + "+abs(v_v" + X + ")+abs(" + kin + "-abs(v_v" + X + ")))"; // max
-    }
-  const std::string cap = num(in.servo.max_velocity), ratio = num(in.servo.kinematic_speed_ratio);
-  o << "variable vkin equal " << kin << "\n"
-    << "variable vmax equal 0.5*(" << cap << "+" << ratio << "*v_vkin+abs(" << cap << "-" << ratio << "*v_vkin))\n";
-  for (int a = 0; a < 3; ++a)
-    if (!s.kinematic(a))
-      o << servo_variables(kAxis[a], s.axes[a].value, in);
+  if (!s.unload_at.empty()) { // the stress the stage starts from: the branches' default target
+    for (const char *v : {"sx", "sy", "sz", "sxy", "syz", "szx"})
+      o << "variable S0" << v << " equal ${" << v << "}\n";
+    for (std::size_t k = 0; k < s.unload_at.size(); ++k)
+      o << "variable fired" << index << "_" << k + 1 << " equal 0\n";
+  }
+  o << kinematic_and_servo_variables(s, 1.0, in);
   std::string stop = "0";
   for (const Condition &c : s.stop_any)
     stop += "||" + condition_expression(c, where + "/stop when", in.case_file);
@@ -225,8 +287,10 @@ std::string stage_section(const Stage &s, int index, long long steps_per_sample,
     << "label loop" << index << "\n"
     << "run " << steps_per_sample << "\n"
     << "print \"" << sample_columns().second << "\" append samples.txt screen no\n"
-    << keep_forces()
-    << "if \"${stop" << index << "} > 0\" then \"jump SELF end" << index << "\"\n"
+    << keep_forces();
+  for (std::size_t k = 0; k < s.unload_at.size(); ++k)
+    o << trigger_block(s, index, int(k), in);
+  o << "if \"${stop" << index << "} > 0\" then \"jump SELF end" << index << "\"\n"
     << "next chunk" << index << "\njump SELF loop" << index << "\n"
     << "print \"stage " << index << " reached its max duration (" << num(s.max_duration) << " s)\"\n"
     << "print \"" << index - 1 << " max-duration\" append stages.txt screen no\n"
@@ -240,13 +304,17 @@ std::string stage_section(const Stage &s, int index, long long steps_per_sample,
   return o.str();
 }
 
-std::string header_section(const LiggghtsDeckInput &in)
+std::string header_section(const LiggghtsDeckInput &in, const std::string &restart)
 {
   std::ostringstream o;
   o << "# LIGGGHTS 3.8 deck written by `geocomp export liggghts " << in.case_file << "` (docs/liggghts.md).\n"
-    << "# SI units. Atom type 1: spheres; type 2: the six wall meshes. Stresses tension positive.\n"
-    << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\n"
-    << "communicate single vel yes\nunits si\nread_data specimen.data\n"
+    << "# SI units. Atom type 1: spheres; type 2: the six wall meshes. Stresses tension positive.\n";
+  if (restart.empty())
+    o << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\n"
+      << "communicate single vel yes\nunits si\nread_data specimen.data\n";
+  else // the restart file keeps the atom style, boundary, box, atoms and the meshes' state
+    o << "atom_modify map array\nnewton off\ncommunicate single vel yes\nunits si\nread_restart " << restart << "\n";
+  o
     << "neighbor " << num(in.skin) << " bin\nneigh_modify delay 0\n";
   for (const std::string &line : in.contact.properties)
     o << line << "\n";
@@ -266,7 +334,7 @@ std::string header_section(const LiggghtsDeckInput &in)
   return o.str();
 }
 
-std::string motion_and_output_section(long long steps_per_sample)
+std::string wall_motion_section(long long steps_per_sample)
 {
   std::ostringstream o;
   o << "# ---- wall motion: outward speed v<axis> of both walls, redefined by each stage\n"
@@ -282,24 +350,35 @@ std::string motion_and_output_section(long long steps_per_sample)
   for (int w = 0; w < 6; ++w)
     for (int a = 0; a < 3; ++a)
       o << "variable F" << kAxis[a] << "_" << kWall[w] << " equal f_w_" << kWall[w] << "[" << a + 1 << "]\n";
+  o << "thermo_style custom step v_t v_Lx v_Ly v_Lz v_sx v_sy v_sz ke c_erot\nthermo " << steps_per_sample
+    << "\nthermo_modify norm no lost error\n";
+  return o.str();
+}
+
+namespace {
+std::string program_start_section()
+{
+  std::ostringstream o;
   const auto [cols, vals] = sample_columns();
   // One row at the start of the program and one after each chunk (print, not fix print:
   // the first row is the state the program starts from, and each row carries its stage).
-  o << "thermo_style custom step v_t v_Lx v_Ly v_Lz v_sx v_sy v_sz ke c_erot\nthermo " << steps_per_sample
-    << "\nthermo_modify norm no lost error\n"
-    << "# One step at rest before the program: LIGGGHTS computes no wall force in a run's setup,\n"
+  o << "# One step at rest before the program: LIGGGHTS computes no wall force in a run's setup,\n"
        "# so the program starts (t = 0, the first sample) when the walls' forces exist.\n"
-    << "variable stage equal 0\nvariable nrun equal 0\n";
+    << "variable stage equal 0\nvariable branch equal 0\nvariable nbranch equal 0\nvariable nrun equal 0\n";
   for (int w = 0; w < 6; ++w)
     o << "variable kF_" << kWall[w] << " equal 0.0\n";
   o << "run 1\n" << keep_forces()
     << "print \"# " << cols << "\" file samples.txt screen no\n"
     << "print \"" << vals << "\" append samples.txt screen no\n"
-    << "print \"# stage end\" file stages.txt screen no\n";
+    << "print \"# stage end\" file stages.txt screen no\n"
+    << "print \"# start id stage trigger t | end id target|max-duration\" file branches.txt screen no\n";
   return o.str();
 }
-
 } // namespace
+
+} // namespace deck
+
+using namespace deck;
 
 void write_liggghts_data(const fs::path &file, const Packing &p)
 {
@@ -326,9 +405,25 @@ void write_liggghts_data(const fs::path &file, const Packing &p)
 
 void check_liggghts_program(const LoadingProgram &program, const std::string &case_file)
 {
-  for (std::size_t k = 0; k < program.stages.size(); ++k)
-    for (const Condition &c : program.stages[k].stop_any)
-      condition_expression(c, "program/stage " + std::to_string(k + 1) + "/stop when", case_file);
+  for (std::size_t k = 0; k < program.stages.size(); ++k) {
+    const Stage &s = program.stages[k];
+    const std::string where = "program/stage " + std::to_string(k + 1);
+    for (const Condition &c : s.stop_any)
+      condition_expression(c, where + "/stop when", case_file);
+    for (const BranchTrigger &b : s.unload_at) {
+      if (b.kind == BranchTrigger::Kind::AtPeak)
+        throw CaseError(case_file, where + "/unload at",
+                        "'peak': the LIGGGHTS deck writes a restart file when a trigger holds, and a peak is "
+                        "known only after it (geocomp keeps the state at every new peak); give a condition "
+                        "such as 'gamma_max >= 0.02'");
+      condition_expression(b.condition, where + "/unload at", case_file);
+    }
+    if (s.locate_elastic_limit)
+      throw CaseError(case_file, where + "/locate elastic limit",
+                      "the LIGGGHTS deck does not bisect the elastic limit (extra branches placed after the main "
+                      "path need a restart file at every sample); set it to false and place the branches with "
+                      "'unload at'");
+  }
 }
 
 namespace {
@@ -351,13 +446,18 @@ namespace {
 LiggghtsDeckSummary write_deck_files(const fs::path &dir, const LiggghtsDeckInput &in, LiggghtsDeckSummary out)
 {
   const LoadingProgram &prog = *in.program;
-  std::string deck = header_section(in) + geometry_section(*in.packing, in.contact) +
-                     motion_and_output_section(out.steps_per_sample);
-  for (std::size_t k = 0; k < prog.stages.size(); ++k) { // every refusal before any file is written
-    deck += stage_section(prog.stages[k], int(k + 1), out.steps_per_sample, in.time_step, in);
-    if (!prog.stages[k].unload_at.empty())
-      out.notes.push_back("stage " + std::to_string(k + 1) +
-                          ": unloading branches are not played (restarts from LIGGGHTS restart files: not yet)");
+  std::string deck = header_section(in, "") + geometry_section(*in.packing, in.contact) +
+                     wall_motion_section(out.steps_per_sample) + program_start_section();
+  check_liggghts_program(prog, in.case_file); // every refusal before any file is written
+  std::vector<std::pair<std::string, std::string>> branches; // file, deck
+  for (std::size_t k = 0; k < prog.stages.size(); ++k) {
+    const Stage &s = prog.stages[k];
+    deck += stage_section(s, int(k + 1), out.steps_per_sample, in.time_step, in);
+    for (std::size_t b = 0; b < s.unload_at.size(); ++b) {
+      const std::string name = branch_name(int(k + 1), int(b + 1));
+      branches.emplace_back("in." + name, branch_deck(s, int(k + 1), int(b + 1), out.steps_per_sample, in));
+      out.branch_decks.push_back(dir / ("in." + name));
+    }
   }
   deck += "print \"geocomp deck: program done at t = ${t} s\"\n";
   fs::create_directories(dir);
@@ -367,6 +467,8 @@ LiggghtsDeckSummary write_deck_files(const fs::path &dir, const LiggghtsDeckInpu
   for (int w = 0; w < 6; ++w)
     write_text(dir / ("wall_" + std::string(kWall[w]) + ".stl"), face_stl(*in.packing, w));
   write_text(out.deck, deck);
+  for (const auto &[file, text] : branches)
+    write_text(dir / file, text);
   return out;
 }
 } // namespace

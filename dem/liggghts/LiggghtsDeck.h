@@ -30,8 +30,14 @@
 // (time, stage, wall positions, edges, the wall stresses tension positive, kinetic
 // energies, the six walls' forces), and `stages.txt`, how each stage ended
 // (LiggghtsSamples.h reads both).
-// Unloading branches (restarts from LIGGGHTS restart files) are not written yet: the deck
-// plays the main path and says so.
+// Unloading branches (S0 Fig. 2): after each main-path sample the deck tests the stage's
+// `unload at` conditions; one that holds for the first time gets the next branch id, a
+// `write_restart branch_<stage>_<trigger>.restart`, a state file beside it and a `start`
+// line in branches.txt, and the main path goes on in the same run (writing a restart file
+// leaves the run's state bit for bit as it is: measured). Each trigger has its own deck,
+// `in.branch_<stage>_<trigger>` (LiggghtsBranchDeck.cpp), a second LIGGGHTS run from that
+// restart with every rate reversed until tau_max is back to the target; its rows carry the
+// branch id. A "peak" trigger and `locate elastic limit` are refused (CaseError).
 #pragma once
 
 #include "common/LoadingProgram.h"
@@ -63,16 +69,18 @@ struct LiggghtsDeckSummary
   std::filesystem::path deck, data;
   long long steps_per_sample = 0;
   double time_step = 0.0; ///< [s] the deck's: the sample interval over whole steps, at most geocomp's dt
-  std::vector<std::string> notes; ///< what the deck does not play (unloading branches)
+  std::vector<std::string> notes;                  ///< what the deck does not play
+  std::vector<std::filesystem::path> branch_decks; ///< in.branch_<stage>_<trigger>, one per trigger
 };
 
 /// Writes the folder's files; throws CaseError for a program entry LIGGGHTS cannot play
-/// (a stop condition on peak_drop, servo_error or stress_ratio) before writing anything.
+/// (a stop condition or trigger on peak_drop, servo_error or stress_ratio, a "peak"
+/// trigger, `locate elastic limit`) before writing anything.
 LiggghtsDeckSummary write_liggghts_case(const std::filesystem::path &dir, const LiggghtsDeckInput &in);
 
 /// The program entries the deck cannot play, refused as write_liggghts_case() refuses
-/// them (CaseError naming "program/stage N/stop when"), without a specimen: the command
-/// checks them before it prepares one.
+/// them (CaseError naming "program/stage N/stop when", ".../unload at" or ".../locate
+/// elastic limit"), without a specimen: the command checks them before it prepares one.
 void check_liggghts_program(const LoadingProgram &program, const std::string &case_file);
 
 /// The specimen data file alone (2 atom types: spheres 1, walls 2).

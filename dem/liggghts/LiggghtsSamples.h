@@ -15,6 +15,12 @@
 //    the walls, so compression comes out negative. The stress is the instantaneous one
 //    (interval_means false: the deck has no interval mean);
 //  - extras: the translational and rotational kinetic energies [J].
+// Unloading branches: rows whose `branch` column is k >= 1 were written by branch k's run
+// (LiggghtsBranchDeck.cpp); `branches.txt` says where each left the main path (`start ID
+// STAGE TRIGGER TIME`) and how it ended (`end ID target|max-duration`). Each branch's rows
+// are placed after the main-path sample at its start time, and its BranchRecord computed
+// as ProgramRunner::run_branch does (tau_start, the target tau_D of the stage start's
+// stress, the residual gamma_max from the stage start).
 // `stages.txt` says how each stage ended ("stop" or "max-duration"); a stop is named by the
 // first stop condition that holds at the stage's last sample, as the ProgramRunner names it.
 #pragma once
@@ -24,6 +30,8 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace geocomp::dem {
 
@@ -33,7 +41,13 @@ struct LiggghtsSamplesError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// The Response of the deck's run in `dir`, its stages named after `program`.
+/// The decks of the branches the main run of `dir` started (branches.txt's `start` lines),
+/// in the order of their ids: "in.branch_<stage>_<trigger>", to run after the main deck.
+std::vector<std::string> liggghts_branch_decks(const std::filesystem::path &dir);
+
+/// The Response of the deck's run in `dir`, its stages named after `program`; the branch
+/// rows of samples.txt placed after the main-path sample each left from, with their
+/// BranchRecords (branches.txt), as geocomp's ProgramRunner records them.
 Response read_liggghts_samples(const std::filesystem::path &dir, const LoadingProgram &program);
 
 } // namespace geocomp::dem
