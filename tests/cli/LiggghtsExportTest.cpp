@@ -33,6 +33,10 @@ const fs::path &scratch()
   return dir;
 }
 
+/// The output folder of case `name` (one per case: a refused command's test finds nothing
+/// that another test of this process wrote).
+fs::path results_dir(const std::string &name) { return scratch() / (name + "-results"); }
+
 /// A DEM case of 250 spheres consolidated to 100 kPa, with the given stage and contact entries.
 fs::path write_case(const std::string &name, const std::string &stage, const std::string &contact = "")
 {
@@ -47,7 +51,7 @@ fs::path write_case(const std::string &name, const std::string &stage, const std
                            "subsection dem\n  set threads = 1\n  set snapshots = 0\nend\n"
                            "subsection program\n  set sampling interval = 0.002\n  subsection stage 1\n" +
                            stage + "  end\nend\nsubsection output\n  set directory = " +
-                           (scratch() / "results").string() + "\nend\n";
+                           results_dir(name).string() + "\nend\n";
   return file;
 }
 
@@ -184,7 +188,7 @@ TEST_F(LiggghtsExport, TheDataFileReadsBackWithThePositionsAndRadiiOfTheSpecimen
   const LiggghtsRun &r = liggghts_run("triaxial", kTriaxial);
   ASSERT_EQ(r.exported.code, 0) << r.exported.err;
   const geocomp::dem::Packing p = geocomp::dem::read_lammps_data(r.deck_dir / "specimen.data");
-  const auto engine = geocomp::dem::DemEngine::from_checkpoint(scratch() / "results" / "dem-specimen.bin", {});
+  const auto engine = geocomp::dem::DemEngine::from_checkpoint(results_dir("triaxial") / "dem-specimen.bin", {});
   const geocomp::dem::DemSystem &s = engine->system();
   ASSERT_EQ(p.size(), s.n_particles());
   ASSERT_EQ(p.velocity.size(), p.size()); // the consolidated specimen's velocities travel too
@@ -206,9 +210,9 @@ TEST_F(LiggghtsExport, TheImportedLiggghtsCurveAgreesWithGeocompDemOnTheSameSpec
   ASSERT_EQ(imported.code, 0) << imported.err;
   const auto dem = geocomp::test::run_program({GEOCOMP_EXE, "dem", (scratch() / "triaxial.prm").string()}, {}, 300.0);
   ASSERT_EQ(dem.code, 0) << dem.err;
-  const geocomp::Response g = geocomp::read_response(scratch() / "results" / "dem.h5");
+  const geocomp::Response g = geocomp::read_response(results_dir("triaxial") / "dem.h5");
   geocomp::RunMeta meta;
-  const geocomp::Response l = geocomp::read_response(scratch() / "results" / "liggghts.h5", &meta);
+  const geocomp::Response l = geocomp::read_response(results_dir("triaxial") / "liggghts.h5", &meta);
   EXPECT_EQ(l.engine, "liggghts");
   EXPECT_EQ(meta.case_text, r.case_text);
   ASSERT_EQ(l.stage_end_reasons.size(), 1u);
@@ -249,7 +253,7 @@ TEST_F(LiggghtsExport, ImportingAFolderWhereLiggghtsHasNotRunIsRefusedWithExitTw
   const auto r = geocomp::test::run_program({GEOCOMP_EXE, "import", "liggghts", out.string()}, {}, 60.0);
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("samples.txt"), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(scratch() / "results" / "liggghts.h5"));
+  EXPECT_FALSE(fs::exists(results_dir("notrun") / "liggghts.h5"));
 }
 
 TEST_F(LiggghtsExport, AContactEntryLiggghtsCannotMapIsRefusedWithExitTwoNamingTheFileAndEntry)
@@ -279,7 +283,7 @@ TEST_F(LiggghtsExport, ALinearLawWhoseConstantsDifferBetweenPairsIsRefusedWithEx
   std::ofstream(c) << text;
   const auto r = export_case(c, scratch() / "poly-liggghts");
   EXPECT_EQ(r.code, 2);
-  EXPECT_FALSE(fs::exists(scratch() / "results" / "dem-specimen.bin")) << "refused before the specimen is prepared";
+  EXPECT_FALSE(fs::exists(results_dir("poly") / "dem-specimen.bin")) << "refused before the specimen is prepared";
   EXPECT_NE(r.err.find("specimen/size distribution"), std::string::npos) << r.err;
 }
 
@@ -292,7 +296,7 @@ TEST_F(LiggghtsExport, AStopConditionTheDeckCannotTestIsRefusedWithExitTwo)
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("program/stage 1/stop when"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
-  EXPECT_FALSE(fs::exists(scratch() / "results" / "dem-specimen.bin")) << "refused before the specimen is prepared";
+  EXPECT_FALSE(fs::exists(results_dir("peak") / "dem-specimen.bin")) << "refused before the specimen is prepared";
 }
 
 TEST_F(LiggghtsExport, TheHertzMindlinLawRunsInLiggghtsWithTheLateralStressHeld)
