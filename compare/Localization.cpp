@@ -379,27 +379,4 @@ LocalizationResult detect_localization(const std::vector<ParticleSnapshot> &snap
   return r;
 }
 
-DisplacementMap midsection_map(const ParticleSnapshot &reference, const ParticleSnapshot &current,
-                               double y_mid, double half_thickness, int component,
-                               const std::string &title)
-{
-  check_snapshot(reference, "reference");
-  check_snapshot(current, "current");
-  if (component < 0 || component > 2)
-    throw std::invalid_argument("displacement component must be 0, 1 or 2");
-  const std::vector<long> m = match(reference, current);
-  DisplacementMap map;
-  map.title = title;
-  map.component = std::string("u_") + "xyz"[component];
-  for (std::size_t i = 0; i < reference.ids.size(); ++i) {
-    const Vector3 &X = reference.positions[i];
-    if (m[i] < 0 || std::abs(X[1] - y_mid) > half_thickness)
-      continue;
-    map.x.push_back(X[0]);
-    map.z.push_back(X[2]);
-    map.u.push_back(current.positions[m[i]][component] - X[component]);
-  }
-  return map;
-}
-
 } // namespace geocomp::compare

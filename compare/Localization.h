@@ -111,17 +111,4 @@ struct LocalizationResult {
 LocalizationResult detect_localization(const std::vector<ParticleSnapshot> &snapshots,
                                        const LocalizationOptions &options);
 
-/// Scattered (x, z, u) data of one displacement component in a mid-section slab
-/// |y - y_mid| <= half_thickness (S0 Fig. 4 maps), from two snapshots.
-struct DisplacementMap {
-  std::string title;
-  std::string component; ///< "u_x", "u_y", "u_z" (or any field shown the same way, e.g. "kappa")
-  std::vector<double> x, z, u;
-  double scale = 1e3;    ///< plotted value = u * scale, in `unit`
-  std::string unit = "mm";
-};
-DisplacementMap midsection_map(const ParticleSnapshot &reference, const ParticleSnapshot &current,
-                               double y_mid, double half_thickness, int component,
-                               const std::string &title);
-
 } // namespace geocomp::compare

@@ -161,22 +161,6 @@ void write_text(const fs::path &p, const std::string &text)
     throw std::runtime_error("cannot write " + p.string());
 }
 
-/// The colour range of a map: the field's range, widened to at least 1 % of its largest
-/// magnitude about its middle, so that a uniform field (a homogeneous kappa, equal to
-/// 0.0025 %) shows as one colour rather than a pattern of round-off.
-std::string colour_range(const DisplacementMap &map)
-{
-  if (map.u.empty())
-    return "";
-  const auto [lo, hi] = std::minmax_element(map.u.begin(), map.u.end());
-  const double a = *lo * map.scale, b = *hi * map.scale;
-  const double half = 0.5 * std::max(b - a, 0.01 * std::max(std::abs(a), std::abs(b)));
-  if (!(half > 0.0) || !std::isfinite(half))
-    return "set cbrange [" + format_number(a - 1.0) + ":" + format_number(b + 1.0) + "]\n"; // all zero
-  const double mid = 0.5 * (a + b);
-  return "set cbrange [" + format_number(mid - half) + ":" + format_number(mid + half) + "]\n";
-}
-
 /// Vertical dotted lines at the localization onsets found (Rudnicki-Rice's prediction and
 /// each engine's), labelled with their source, in the curves' strain measure.
 std::string onset_lines(const ReportInput &in)
@@ -302,21 +286,6 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
        << "set xrange [0:*]\nset yrange [0:*]\nset offsets 0, graph 0.08, graph 0.05, 0\n"
        << plot_list("5:6", false, false) << "set autoscale\nset offsets 0, 0, 0, 0\nset key top right box opaque\n";
     pngs.push_back("stress_path.png");
-  }
-  for (std::size_t m = 0; m < in.maps.size(); ++m) {
-    const auto &map = in.maps[m];
-    std::ostringstream d;
-    d << "# x[m] z[m] " << map.component << "[" << map.unit << "]\n";
-    for (std::size_t i = 0; i < map.x.size(); ++i)
-      d << map.x[i] << ' ' << map.z[i] << ' ' << map.u[i] * map.scale << '\n';
-    const std::string name = "map" + std::to_string(m);
-    write_text(dir / "data" / (name + ".dat"), d.str());
-    gp << "\nset output '" << name << ".png'\nset title " << gnuplot_quoted(map.title) << "\nset size ratio -1\nunset key\n"
-       << "set xlabel 'x [m]'\nset ylabel 'z [m]'\nset cblabel '" << map.component << " [" << map.unit << "]'\n"
-       << "set palette defined (0 '#313695', 1 '#74add1', 2 '#ffffbf', 3 '#f46d43', 4 '#a50026')\n"
-       << colour_range(map) << "plot 'data/" << name << ".dat' using 1:2:3 with points pt 5 ps 0.9 palette\n"
-       << "set size noratio\nset key top left box opaque\nunset cblabel\nset autoscale cb\n";
-    pngs.push_back(name + ".png");
   }
   gp << state_maps_script(in.state_maps, dir, pngs);
   script = gp.str();

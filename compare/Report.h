@@ -56,7 +56,6 @@ struct ReportInput {
   std::vector<NamedResponse> responses;
   std::vector<NamedMetrics> metrics; ///< the first is the reference of the differences
   std::optional<RrVerdict> verdict;
-  std::vector<DisplacementMap> maps; ///< mid-section maps (S0 Fig. 4 style)
   /// Maps at the named states (B, peak, D, DEM onset), DEM | FE per row (SectionMaps.h);
   /// `state_maps_note` says where the states and the sections come from.
   std::vector<StateMaps> state_maps;

@@ -120,8 +120,7 @@ void request_interrupt(int signal = 0);
 void clear_interrupt();
 
 /// Snapshot of the particles and contacts, particles in id order (ids 0..N-1).
-/// `ids` + `positions` are what compare::ParticleSnapshot holds (local strain, D2min,
-/// mid-section maps of u_x, u_z in y = L0/2 through compare::midsection_map).
+/// `ids` + `positions` are what compare::ParticleSnapshot holds (local strain, D2min).
 struct ParticleFields
 {
   double time = 0.0;   ///< program time

@@ -238,22 +238,4 @@ std::vector<ParticleFields> read_snapshots(const std::filesystem::path &h5_file)
   return out;
 }
 
-MidsectionData midsection_displacements(const ParticleFields &f, int component, double y_mid,
-                                        double half_thickness)
-{
-  if (component < 0 || component > 2)
-    throw std::invalid_argument("midsection_displacements: component must be 0, 1 or 2");
-  MidsectionData m;
-  m.component = component;
-  for (std::size_t k = 0; k < f.positions.size(); ++k) {
-    const Vector3 x0 = f.positions[k] - f.displacements[k]; // position at the program start
-    if (std::abs(x0[1] - y_mid) > half_thickness)
-      continue;
-    m.x.push_back(x0[0]);
-    m.z.push_back(x0[2]);
-    m.u.push_back(f.displacements[k][component]);
-  }
-  return m;
-}
-
 } // namespace geocomp::dem

@@ -13,7 +13,7 @@
 // Layout: /snapshots/s000000, s000001, ... each with attributes time and label and the
 // datasets named as the ParticleFields members (n x 3 for vectors, c x 2 int64 for
 // contact pairs). Reading back (read_snapshots) gives the same numbers bit for bit:
-// the reference and current states for compare::local_strain / midsection_map.
+// the reference and current states for compare::local_strain.
 #pragma once
 
 #include "dem/program/DemEngine.h"
@@ -32,17 +32,5 @@ std::vector<ParticleFields> read_snapshots(const std::filesystem::path &h5_file)
 
 /// The XDMF sidecar's path for an HDF5 fields file (same name, extension .xdmf).
 std::filesystem::path xdmf_path(const std::filesystem::path &h5_file);
-
-/// Scattered data (x, z, u) of displacement component `component` (0: u_x, 2: u_z) of the
-/// particles whose centres lie in the slab |y - y_mid| <= half_thickness, from a snapshot's
-/// displacements since the program start (S0 Fig. 3, 5: y_mid = L0_y/2 of the initial box).
-/// compare::midsection_map does the same between any two snapshots.
-struct MidsectionData
-{
-  int component = 0;
-  std::vector<double> x, z, u;
-};
-MidsectionData midsection_displacements(const ParticleFields &fields, int component, double y_mid,
-                                        double half_thickness);
 
 } // namespace geocomp::dem

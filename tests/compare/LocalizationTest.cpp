@@ -149,16 +149,3 @@ TEST(Localization, PlantedShearBandOnsetAndAngleRecovered)
   ASSERT_TRUE(t.onset_found);
   EXPECT_EQ(t.onset_snapshot, std::size_t(onset));
 }
-
-TEST(Localization, MidsectionMapKeepsTheSlabAndItsDisplacement)
-{
-  const ParticleSnapshot ref = lattice(6, 1.0, 0.0, 1);
-  ParticleSnapshot cur = ref;
-  for (auto &p : cur.positions)
-    p.x() += 0.01 * p.z();
-  const DisplacementMap m = midsection_map(ref, cur, 2.0, 0.5, 0, "u_x at y = 2");
-  EXPECT_EQ(m.x.size(), 36u); // one lattice plane of 6 x 6
-  for (std::size_t i = 0; i < m.x.size(); ++i)
-    EXPECT_NEAR(m.u[i], 0.01 * m.z[i], 1e-12);
-  EXPECT_EQ(m.component, "u_x");
-}

@@ -208,16 +208,6 @@ ReportInput sample_input()
   in.verdict = rudnicki_rice_verdict({"Rudnicki-Rice", true, 0.020, 56.48, true, ""},
                                      {{"FE acoustic tensor", true, 0.0215, 55.2, true, ""},
                                       {"DEM", true, 0.031, 61.0, true, ""}});
-  DisplacementMap map;
-  map.title = "DEM u_x at the peak, y = L/2";
-  map.component = "u_x";
-  for (int i = 0; i < 30; ++i)
-    for (int k = 0; k < 30; ++k) {
-      map.x.push_back(i / 29.0);
-      map.z.push_back(k / 29.0);
-      map.u.push_back(1e-3 * std::tanh((i / 29.0 * 0.5 + k / 29.0 * 0.866 - 0.68) / 0.05));
-    }
-  in.maps.push_back(map);
   in.calibrated_parameters = {{"E", "512 MPa"}, {"phi", "38.2 deg"}};
   return in;
 }
@@ -313,32 +303,6 @@ TEST(Report, DifferencesAreShownToTheDigitsOfTheValuesNotAsRoundOff)
   EXPECT_TRUE(std::isnan(shown_difference(NAN, 1.0)));
 }
 
-TEST(Report, AUniformMapIsOneColourAndAVaryingMapSpansItsRange)
-{
-  ReportInput in = sample_input();
-  in.maps.clear();
-  DisplacementMap uniform{"kappa", "kappa", {0.0, 1.0, 0.0, 1.0}, {0.0, 0.0, 1.0, 1.0}, {}, 100.0, "%"};
-  uniform.u = {0.02, 0.02 * (1 + 2.5e-5), 0.02, 0.02 * (1 - 1e-5)}; // equal to 0.0025 %
-  DisplacementMap varying = uniform;
-  varying.u = {-1e-3, 0.0, 1e-3, 2e-3};
-  in.maps = {uniform, varying};
-  const fs::path dir = scratch("maprange");
-  ReportOptions o;
-  o.gnuplot = "/nonexistent/gnuplot";
-  write_report(in, dir, o);
-  const std::string gp = read(dir / "report.gp");
-  std::vector<std::string> ranges;
-  for (std::size_t at = gp.find("set cbrange ["); at != std::string::npos; at = gp.find("set cbrange [", at + 1))
-    ranges.push_back(gp.substr(at + 13, gp.find(']', at) - at - 13));
-  ASSERT_EQ(ranges.size(), 2u) << gp;
-  const auto span = [](const std::string &r) {
-    return std::stod(r.substr(r.find(':') + 1)) - std::stod(r.substr(0, r.find(':')));
-  };
-  EXPECT_NEAR(span(ranges[0]), 0.01 * 2.0, 1e-4) << ranges[0]; // 1 % of 2 % (kappa in %)
-  EXPECT_NEAR(span(ranges[1]), 0.3, 1e-9) << ranges[1];        // -0.1 .. 0.2 mm
-  fs::remove_all(dir.parent_path());
-}
-
 namespace {
 /// Headless chromium on `page` (a file); its standard output (the DOM with --dump-dom) and
 /// standard error (the console with --enable-logging) in files of `dir`.
@@ -428,7 +392,6 @@ TEST(Report, NamesEveryStateAndGivesTheDemAndFePanelsOfARowOneColourScale)
                                        {"D", "past the peak", true, 0.02, 4.7e6, ""},
                                        {"DEM onset", "onset", false, NAN, NAN, "no onset found (DEM)"}};
   ReportInput in = sample_input();
-  in.maps.clear();
   in.state_maps = state_maps(states, {&dem, {0.0, 0.01, 0.02}}, "DEM", {&fe, {0.0, 0.01, 0.02}}, "FE cube");
   in.state_maps_note = "synthetic sections";
   const fs::path dir = scratch("states");
@@ -507,7 +470,6 @@ TEST(Report, OpensInABrowserWithEveryImageAndLinkAndNoScriptError)
 TEST(Report, WithoutGnuplotTablesAreStillWrittenAtomically)
 {
   ReportInput in = sample_input();
-  in.maps.clear();
   const fs::path dir = scratch("nogp");
   ReportOptions o;
   o.gnuplot = "/nonexistent/gnuplot";

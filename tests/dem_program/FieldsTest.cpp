@@ -76,18 +76,5 @@ TEST(DemFields, SnapshotsRoundTripThroughHdf5WithXdmfSidecar)
     ++entries;
   EXPECT_EQ(entries, 2);
 
-  // Mid-section y = L0/2: x shortens by 2 %, so u_x ~ -0.02 (x - x_c) (S0 Fig. 3, near B).
-  const double y_mid = 0.5 * (f0.box_min[1] + f0.box_max[1]);
-  const double x_c = 0.5 * (f0.box_min[0] + f0.box_max[0]);
-  const MidsectionData ux = midsection_displacements(f1, 0, y_mid, 0.01);
-  const MidsectionData uz = midsection_displacements(f1, 2, y_mid, 0.01);
-  ASSERT_GT(ux.u.size(), 20u);
-  EXPECT_EQ(uz.u.size(), ux.u.size());
-  double sxx = 0.0, sxu = 0.0;
-  for (std::size_t k = 0; k < ux.u.size(); ++k) {
-    sxx += (ux.x[k] - x_c) * (ux.x[k] - x_c);
-    sxu += (ux.x[k] - x_c) * ux.u[k];
-  }
-  EXPECT_NEAR(sxu / sxx, -0.02, 0.006); // best-fit slope du_x/dx
   std::filesystem::remove_all(dir);
 }
