@@ -431,6 +431,17 @@ std::vector<ContactState> DemSystem::export_contact_state() const
   return out;
 }
 
+DemSystem::BondCount DemSystem::bond_count() const
+{
+  BondCount n;
+  if (!law_has_memory()) return n;
+  for (const ContactState& c : export_contact_state()) {
+    if (c.memory.has(ContactMemory::bonded)) ++n.intact;
+    if (c.memory.has(ContactMemory::bond_broken)) ++n.broken;
+  }
+  return n;
+}
+
 void DemSystem::import_contact_state(const std::vector<ContactState>& states)
 {
   std::vector<HistoryEntry> pairs, walls;

@@ -300,6 +300,9 @@ public:
   /// Touching particle-particle contacts (C of Z = 2C/N).
   std::size_t n_touching_pairs() const;
   std::vector<ContactState> export_contact_state() const;
+  /// S3 bonds (cohesion parts) now intact and broken for good, particle-particle and wall.
+  struct BondCount { std::size_t intact = 0, broken = 0; };
+  BondCount bond_count() const;
   void import_contact_state(const std::vector<ContactState>& states);
   /// Listed pair slots (touching or within the skin), storage indices.
   const ContactLists& contact_lists() const { return lists_; }

@@ -271,7 +271,9 @@ std::vector<ExtraColumn> DemEngine::extra_columns() const
            "stress-controlled axes; an oscillating servo reverses every step)"},
           {"wall_rate_xx", "1/s", "engineering strain rate of the x walls at the sample's last step"},
           {"wall_rate_yy", "1/s", "the same for y"},
-          {"wall_rate_zz", "1/s", "the same for z"}};
+          {"wall_rate_zz", "1/s", "the same for z"},
+          {"intact_bonds", "1", "S3 cohesive bonds now intact, particle-particle and particle-wall (0 without bonds)"},
+          {"broken_bonds", "1", "S3 cohesive bonds broken for good since they formed (S3 eq. (8))"}};
 }
 
 namespace {
@@ -591,6 +593,9 @@ ResponseSample DemEngine::measure()
   s.extras[kServoReversals] = double(s_.servo_reversals);
   for (int a = 0; a < 3; ++a)
     s.extras[kWallRateXX + a] = s_.rate[a];
+  const DemSystem::BondCount bonds = system_.bond_count();
+  s.extras[kIntactBonds] = double(bonds.intact);
+  s.extras[kBrokenBonds] = double(bonds.broken);
   s_.stress_sum = Tensor3::Zero(); // the next interval starts here
   s_.rate_sum = Vector3::Zero();
   s_.window_time = 0.0;

@@ -150,7 +150,8 @@ public:
     kLoveWeberXX, kLoveWeberYY, kLoveWeberZZ, kLoveWeberXY, kLoveWeberYZ, kLoveWeberXZ, kLoveWeberMean,
     kCoordination, kMechanicalCoordination, kWallContacts, kFabricXX, kFabricYY, kFabricZZ,
     kFabricAnisotropy, kPorosity, kKineticEnergy, kInertialNumber, kUnbalancedForceRatio, kSteps,
-    kServoDeviation, kServoReversals, kWallRateXX, kWallRateYY, kWallRateZZ, kExtraCount
+    kServoDeviation, kServoReversals, kWallRateXX, kWallRateYY, kWallRateZZ,
+    kIntactBonds, kBrokenBonds, kExtraCount
   };
 
   /// `system` must hold the six walls of add_box() as walls 0..5; its box, time and
