@@ -198,6 +198,10 @@ public:
   const ContactModel& contact_model() const { return model_; }
   /// Whether bonds and adhesion (cohesion parts) form with walls too (default false).
   void set_wall_bonding(bool on) { wall_bonding_ = on; invalidate(); }
+  /// Which walls bond when wall bonding is on: bit k for wall k (walls past 63 always
+  /// bond); default all. Direct tension bonds the loading platens only (z walls: 0b110000).
+  void set_bonding_walls(std::uint64_t mask) { bonding_walls_ = mask; invalidate(); }
+  std::uint64_t bonding_walls() const { return bonding_walls_; }
   /// Particle-particle Coulomb coefficient mu_s.
   void set_friction(double mu);
   double friction() const { return mu_; }
@@ -356,6 +360,7 @@ private:
   ContactModel model_;
   double mu_ = 0.0;
   bool wall_bonding_ = false;
+  std::uint64_t bonding_walls_ = ~std::uint64_t(0);
   ClumpSet clumps_;
   NeighbourSearch search_;
   ContactLists lists_;

@@ -85,6 +85,13 @@ ContactModel make_contact_model(const ContactParameters &c)
   return with_contact_parts(make_base_contact_model(c), c); // rolling, bonds, S3 friction
 }
 
+void set_contact_law(DemSystem &system, const ContactParameters &c)
+{
+  system.set_contact_model(make_contact_model(c));
+  system.set_wall_bonding(c.wall_bonding);
+  system.set_bonding_walls(c.bonding_walls == "z" ? std::uint64_t(0b110000) : ~std::uint64_t(0)); // walls 4, 5: z-, z+
+}
+
 DemSystem make_system(const Packing &packing, const ContactParameters &c, const DemParameters &d)
 {
   if (packing.size() == 0)
@@ -102,9 +109,8 @@ DemSystem make_system(const Packing &packing, const ContactParameters &c, const 
     d_mean += 2.0 * packing.radius[k];
   }
   d_mean /= double(packing.size());
-  system.set_contact_model(make_contact_model(c));
+  set_contact_law(system, c);
   system.set_friction(c.particle_friction);
-  system.set_wall_bonding(c.wall_bonding);
   system.set_skin(d.skin * d_mean);
   system.set_num_threads(int(d.threads)); // 0: from the problem size
   system.set_local_damping(d.local_damping);

@@ -81,3 +81,29 @@ TEST(BondedLattice, TensileStrengthDoublesWithCcButNotWithTheBondModulus)
   EXPECT_NEAR(strong.peak_stress / weak.peak_stress, 2.0, 0.1);
   EXPECT_NEAR(stiff.peak_stress / weak.peak_stress, 1.0, 0.05);
 }
+
+TEST(BondedLattice, AWallOutsideTheBondingMaskNeitherBondsNorGrips)
+{
+  // Direct tension bonds the platens only (`bonding walls = z`): a sphere touching the x- and
+  // z- walls, pulled away from both, is held by the z- wall's bond and let go by the x- wall.
+  DemSystem sys;
+  S3Bonding::Parameters b;
+  b.cohesion = 1e6;
+  b.cohesion_modulus = 5e7;
+  sys.set_contact_model(LinearCohesive(LinearNormal::with_stiffness(kKn, 1.0), LinearTangential::with_ratio(2.0 / 7.0),
+                                       LinearRolling({0.0, 1.0}), S3Bonding(b)));
+  sys.add_box(Vec3::Zero(), Vec3::Constant(0.1), 0.0);
+  const double d0 = 1e-3 * kR;
+  sys.add_sphere(Vec3(kR - d0, 0.05, kR - d0), kR, 1e15);  // so heavy that its velocity stays as set
+  sys.set_wall_bonding(true);
+  sys.set_bonding_walls(0b110000);  // walls 4, 5: z-, z+
+  sys.set_time_step(1e-6);
+  const double eps = 2.0 * kR * b.cohesion / b.cohesion_modulus;  // wall bond: r_ij = 2R
+  sys.set_velocity(0, Vec3(0.01, 0.0, 0.01));
+  while (sys.position(0).z() < kR + 0.5 * eps)
+    sys.step();
+  const double kc = b.cohesion_modulus * 2.0 * kR;
+  EXPECT_NEAR(sys.wall(4).force.z(), kc * (sys.position(0).z() - kR + d0), 0.02 * kc * eps)
+    << "the z- wall's bond pulls its wall along +z (S3 eq. (8))";
+  EXPECT_EQ(sys.wall(0).force.norm(), 0.0) << "the x- wall does not bond";
+}
