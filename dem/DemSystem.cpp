@@ -435,7 +435,8 @@ std::vector<ContactState> DemSystem::export_contact_state() const
 DemSystem::BondCount DemSystem::bond_count() const
 {
   BondCount n;
-  if (!law_has_memory()) return n;
+  const bool cohesive = std::visit([](const auto& law) { return std::decay_t<decltype(law)>::has_cohesion; }, model_);
+  if (!cohesive) return n;  // no bonds to count (and no contact state to export)
   for (const ContactState& c : export_contact_state()) {
     if (c.memory.has(ContactMemory::bonded)) ++n.intact;
     if (c.memory.has(ContactMemory::bond_broken)) ++n.broken;

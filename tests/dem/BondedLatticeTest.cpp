@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <sstream>
 
 using namespace geocomp::dem;
 
@@ -106,4 +108,18 @@ TEST(BondedLattice, AWallOutsideTheBondingMaskNeitherBondsNorGrips)
   EXPECT_NEAR(sys.wall(4).force.z(), kc * (sys.position(0).z() - kR + d0), 0.02 * kc * eps)
     << "the z- wall's bond pulls its wall along +z (S3 eq. (8))";
   EXPECT_EQ(sys.wall(0).force.norm(), 0.0) << "the x- wall does not bond";
+}
+
+TEST(BondedLattice, TheWallsThatBondSurviveACheckpoint)
+{
+  DemSystem sys;
+  sys.add_box(Vec3::Zero(), Vec3::Constant(0.1), 0.0);
+  sys.add_sphere(Vec3::Constant(0.05), kR, kDensity);
+  sys.set_wall_bonding(true);
+  sys.set_bonding_walls(0b110000);
+  std::stringstream state;
+  sys.write_state(state);
+  DemSystem back;
+  back.read_state(state);
+  EXPECT_EQ(back.bonding_walls(), std::uint64_t(0b110000));
 }
