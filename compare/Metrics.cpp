@@ -221,6 +221,7 @@ Curve extract_curve(const Response &response, CurveKind kind, int stage, std::op
     return std::pair<double, double>(sense * e(a, a), sense * s.stress(a, a));
   };
   std::map<std::size_t, std::size_t> position; // sample index -> main-path position
+  const int broken = response.extra_index("broken_bonds");
   for (std::size_t i : idx) {
     const ResponseSample &s = samples[i];
     const auto [x, y] = xy(s);
@@ -234,6 +235,8 @@ Curve extract_curve(const Response &response, CurveKind kind, int stage, std::op
     c.p.push_back(mean_stress(s.stress));
     c.q.push_back(von_mises(s.stress));
     c.sin_phi.push_back(mobilized_sin_phi(s.stress));
+    if (broken >= 0 && std::size_t(broken) < s.extras.size())
+      c.broken_bonds.push_back(s.extras[std::size_t(broken)]);
   }
 
   // Branches: from the records when present, otherwise from the branch ids in the samples.

@@ -86,6 +86,7 @@ struct Curve {
   std::vector<double> p;      ///< mean stress tr(sigma)/3 [Pa], tension positive
   std::vector<double> q;      ///< von Mises equivalent stress [Pa]
   std::vector<double> sin_phi; ///< mobilized (sigma_1 - sigma_3)/(sigma_1 + sigma_3), compression positive
+  std::vector<double> broken_bonds; ///< S3 bonds broken for good (the DEM's `broken_bonds` extra); empty without it
   std::vector<Branch> branches;
   double y0() const { return y.empty() ? 0.0 : y.front(); }
 };

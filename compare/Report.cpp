@@ -202,10 +202,13 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
   }
   for (const auto &[k, c] : curves) {
     std::ostringstream main, br;
-    main << "# x[%] y[MPa] gamma_max[%] eps_v[%](dilation+) p[MPa](compression+) q[MPa] p-p0[MPa](compression+)\n";
+    main << "# x[%] y[MPa] gamma_max[%] eps_v[%](dilation+) p[MPa](compression+) q[MPa] p-p0[MPa](compression+)"
+         << " broken_bonds(S3; nan without)\n";
+    const bool bonds = c.broken_bonds.size() == c.x.size();
     for (std::size_t i = 0; i < c.x.size(); ++i)
       main << c.x[i] * 100 << ' ' << c.y[i] * 1e-6 << ' ' << c.gamma[i] * 100 << ' ' << c.eps_v[i] * 100 << ' '
-           << -c.p[i] * 1e-6 << ' ' << c.q[i] * 1e-6 << ' ' << -(c.p[i] - c.p.front()) * 1e-6 << '\n';
+           << -c.p[i] * 1e-6 << ' ' << c.q[i] * 1e-6 << ' ' << -(c.p[i] - c.p.front()) * 1e-6 << ' '
+           << (bonds ? std::to_string(c.broken_bonds[i]) : std::string("nan")) << '\n';
     br << "# unloading branches, one block each: x[%] y[MPa]\n";
     for (const auto &b : c.branches) {
       for (std::size_t i = 0; i < b.x.size(); ++i)
@@ -286,6 +289,15 @@ std::vector<std::string> write_plot_inputs(const ReportInput &in, const fs::path
        << "set xrange [0:*]\nset yrange [0:*]\nset offsets 0, graph 0.08, graph 0.05, 0\n"
        << plot_list("5:6", false, false) << "set autoscale\nset offsets 0, 0, 0, 0\nset key top right box opaque\n";
     pngs.push_back("stress_path.png");
+    // S3's bonds (DEM extra `broken_bonds`): plotted when some response broke one.
+    const bool any_broken = std::any_of(curves.begin(), curves.end(), [](const auto &kc) {
+      return std::any_of(kc.second.broken_bonds.begin(), kc.second.broken_bonds.end(), [](double b) { return b > 0.0; });
+    });
+    if (any_broken) {
+      gp << "\nset output 'broken_bonds.png'\nset title 'S3 bonds broken for good'\nset xlabel '" << xl
+         << "'\nset ylabel 'broken bonds'\n" << plot_list("1:8", false, false);
+      pngs.push_back("broken_bonds.png");
+    }
   }
   gp << state_maps_script(in.state_maps, dir, pngs);
   script = gp.str();

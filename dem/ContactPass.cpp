@@ -416,7 +416,7 @@ private:
     Vec3 n_w;
     const double h = wall.gap(a.x[p], n_w);  // plane distance for unbounded walls
     double range = a.R[p];
-    if constexpr (Law::has_cohesion) range += in_.wall_bonding ? law_.reach(a.R[p]) : 0.0;
+    if constexpr (Law::has_cohesion) range += in_.bonds_with(s.wall) ? law_.reach(a.R[p]) : 0.0;
     if (h >= range) {
       s.overlap = 0.0;
       s.shear.setZero();
@@ -433,7 +433,7 @@ private:
     ContactForce f;
     if constexpr (Law::has_memory) {
       if constexpr (Law::has_rolling) k.w_rel = a.w[p];  // the wall does not spin
-      k.bonding = in_.wall_bonding;
+      k.bonding = in_.bonds_with(s.wall);
       f = law_.evaluate(k, s.shear, a.wmem[c]);
     } else {
       f = law_.evaluate(k, s.shear);

@@ -48,6 +48,8 @@ struct ContactPassInput
   std::size_t list_builds = 0;    ///< NeighbourSearch::n_builds(): the scatter plan's key
   double mu = 0.0;                ///< particle-particle Coulomb coefficient
   bool wall_bonding = false;      ///< bonds and adhesion with walls too
+  std::uint64_t bonding_walls = ~std::uint64_t(0); ///< bit k: wall k bonds (walls past 63 always)
+  bool bonds_with(std::size_t wall) const { return wall_bonding && (wall >= 64 || ((bonding_walls >> wall) & 1u)); }
   Vec3 gravity = Vec3::Zero();
   int threads = 1;
   bool batched_pairs = false;     ///< the AVX2 pair kernel (S0's law only)

@@ -326,6 +326,7 @@ double DemSystem::compute_forces(double dt_history, double kick_dt, bool record)
   in.list_builds = search_.n_builds();
   in.mu = mu_;
   in.wall_bonding = wall_bonding_;
+  in.bonding_walls = bonding_walls_;
   in.gravity = gravity_;
   in.threads = threads_;
   in.batched_pairs = batched_pairs();
@@ -431,6 +432,18 @@ std::vector<ContactState> DemSystem::export_contact_state() const
   return out;
 }
 
+DemSystem::BondCount DemSystem::bond_count() const
+{
+  BondCount n;
+  const bool cohesive = std::visit([](const auto& law) { return std::decay_t<decltype(law)>::has_cohesion; }, model_);
+  if (!cohesive) return n;  // no bonds to count (and no contact state to export)
+  for (const ContactState& c : export_contact_state()) {
+    if (c.memory.has(ContactMemory::bonded)) ++n.intact;
+    if (c.memory.has(ContactMemory::bond_broken)) ++n.broken;
+  }
+  return n;
+}
+
 void DemSystem::import_contact_state(const std::vector<ContactState>& states)
 {
   std::vector<HistoryEntry> pairs, walls;
@@ -470,12 +483,13 @@ EnergyLedger DemSystem::energy() const
 // moved the slots' loads beside them (ContactLists.h) and added the recording of contact
 // forces; version 5 stores the thread setting (0: automatic) where the count was, in the
 // same layout; version 6 adds the fragments' placement overlap to the contact memory and
-// the breakage terms to the ledger (S2). Version 2 to 5 states (restart files, exact specimens in core stores) are
+// the breakage terms to the ledger (S2); version 7 adds which walls bond (S3 direct tension).
+// Version 2 to 6 states (restart files, exact specimens in core stores) are
 // still read, through their old layouts (LegacyState.h), and continue as they would have,
 // with their count as given.
 
 namespace {
-constexpr std::uint32_t kStateVersion = 6;
+constexpr std::uint32_t kStateVersion = 7;
 
 /// Reads the DEMSYSTM tag; returns its version (2 to 6).
 std::uint32_t read_state_version(std::istream& in)
@@ -588,6 +602,7 @@ void DemSystem::write_state(std::ostream& out) const
   binary::put_vector(out, lists_.pair_memory);
   binary::put_vector(out, lists_.wall_memory);
   binary::put(out, wall_bonding_);
+  binary::put(out, bonding_walls_);
   write_clumps(out, clumps_);
   binary::put(out, dt_);
   binary::put(out, threads_setting_);
@@ -686,12 +701,15 @@ void DemSystem::read_state(std::istream& in)
         (lists_.pair_memory.size() != lists_.pairs.size() || lists_.wall_memory.size() != lists_.walls.size()))
       throw binary::StateError("checkpoint: contact memory does not match the contact lists");
     binary::get(in, wall_bonding_);
+    bonding_walls_ = ~std::uint64_t(0);
+    if (version >= 7) binary::get(in, bonding_walls_);
     read_clumps(in, clumps_);
   } else {  // version 2: plain laws, no clumps
     lists_.with_memory = false;
     lists_.pair_memory.clear();
     lists_.wall_memory.clear();
     wall_bonding_ = false;
+    bonding_walls_ = ~std::uint64_t(0);
     clumps_ = ClumpSet{};
   }
   binary::get(in, dt_);

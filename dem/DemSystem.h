@@ -198,6 +198,10 @@ public:
   const ContactModel& contact_model() const { return model_; }
   /// Whether bonds and adhesion (cohesion parts) form with walls too (default false).
   void set_wall_bonding(bool on) { wall_bonding_ = on; invalidate(); }
+  /// Which walls bond when wall bonding is on: bit k for wall k (walls past 63 always
+  /// bond); default all. Direct tension bonds the loading platens only (z walls: 0b110000).
+  void set_bonding_walls(std::uint64_t mask) { bonding_walls_ = mask; invalidate(); }
+  std::uint64_t bonding_walls() const { return bonding_walls_; }
   /// Particle-particle Coulomb coefficient mu_s.
   void set_friction(double mu);
   double friction() const { return mu_; }
@@ -300,6 +304,9 @@ public:
   /// Touching particle-particle contacts (C of Z = 2C/N).
   std::size_t n_touching_pairs() const;
   std::vector<ContactState> export_contact_state() const;
+  /// S3 bonds (cohesion parts) now intact and broken for good, particle-particle and wall.
+  struct BondCount { std::size_t intact = 0, broken = 0; };
+  BondCount bond_count() const;
   void import_contact_state(const std::vector<ContactState>& states);
   /// Listed pair slots (touching or within the skin), storage indices.
   const ContactLists& contact_lists() const { return lists_; }
@@ -353,6 +360,7 @@ private:
   ContactModel model_;
   double mu_ = 0.0;
   bool wall_bonding_ = false;
+  std::uint64_t bonding_walls_ = ~std::uint64_t(0);
   ClumpSet clumps_;
   NeighbourSearch search_;
   ContactLists lists_;

@@ -36,6 +36,9 @@ void declare_contact_parts(dealii::ParameterHandler &prm)
                     "delta > -delta* = -r_ij C_a / E_a, forms again at the next contact (S3 eq. (7)); 0 = none.");
   prm.declare_entry("adhesion modulus", "1e6", Double(1e-3, 1e13), "S3 adhesion spring modulus E_a [Pa].");
   prm.declare_entry("wall bonding", "false", Bool(), "Whether bonds and adhesion also form with walls.");
+  prm.declare_entry("bonding walls", "all", Selection("all|z"),
+                    "With wall bonding: the walls that bond, 'all' six or the 'z' walls only (the loading platens "
+                    "of a direct tension test; the lateral walls then confine without gripping).");
   prm.leave_subsection();
 }
 

@@ -83,6 +83,7 @@ struct ContactParameters {
   double adhesion = 0.0;                ///< [Pa] S3 C_a; 0 = none
   double adhesion_modulus = 1e6;        ///< [Pa] S3 E_a
   bool wall_bonding = false;            ///< bonds and adhesion with walls too
+  std::string bonding_walls = "all";    ///< all | z: the walls that bond (z: the platens of direct tension)
 
   template <class Self, class V>
   static void visit(Self &p, V &&v)
@@ -111,6 +112,7 @@ struct ContactParameters {
     v("adhesion", p.adhesion);
     v("adhesion modulus", p.adhesion_modulus);
     v("wall bonding", p.wall_bonding);
+    v("bonding walls", p.bonding_walls);
   }
 };
 

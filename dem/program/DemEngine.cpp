@@ -85,6 +85,13 @@ ContactModel make_contact_model(const ContactParameters &c)
   return with_contact_parts(make_base_contact_model(c), c); // rolling, bonds, S3 friction
 }
 
+void set_contact_law(DemSystem &system, const ContactParameters &c)
+{
+  system.set_contact_model(make_contact_model(c));
+  system.set_wall_bonding(c.wall_bonding);
+  system.set_bonding_walls(c.bonding_walls == "z" ? std::uint64_t(0b110000) : ~std::uint64_t(0)); // walls 4, 5: z-, z+
+}
+
 DemSystem make_system(const Packing &packing, const ContactParameters &c, const DemParameters &d)
 {
   if (packing.size() == 0)
@@ -102,9 +109,8 @@ DemSystem make_system(const Packing &packing, const ContactParameters &c, const 
     d_mean += 2.0 * packing.radius[k];
   }
   d_mean /= double(packing.size());
-  system.set_contact_model(make_contact_model(c));
+  set_contact_law(system, c);
   system.set_friction(c.particle_friction);
-  system.set_wall_bonding(c.wall_bonding);
   system.set_skin(d.skin * d_mean);
   system.set_num_threads(int(d.threads)); // 0: from the problem size
   system.set_local_damping(d.local_damping);
@@ -271,7 +277,9 @@ std::vector<ExtraColumn> DemEngine::extra_columns() const
            "stress-controlled axes; an oscillating servo reverses every step)"},
           {"wall_rate_xx", "1/s", "engineering strain rate of the x walls at the sample's last step"},
           {"wall_rate_yy", "1/s", "the same for y"},
-          {"wall_rate_zz", "1/s", "the same for z"}};
+          {"wall_rate_zz", "1/s", "the same for z"},
+          {"intact_bonds", "1", "S3 cohesive bonds now intact, particle-particle and particle-wall (0 without bonds)"},
+          {"broken_bonds", "1", "S3 cohesive bonds broken for good since they formed (S3 eq. (8))"}};
 }
 
 namespace {
@@ -591,6 +599,9 @@ ResponseSample DemEngine::measure()
   s.extras[kServoReversals] = double(s_.servo_reversals);
   for (int a = 0; a < 3; ++a)
     s.extras[kWallRateXX + a] = s_.rate[a];
+  const DemSystem::BondCount bonds = system_.bond_count();
+  s.extras[kIntactBonds] = double(bonds.intact);
+  s.extras[kBrokenBonds] = double(bonds.broken);
   s_.stress_sum = Tensor3::Zero(); // the next interval starts here
   s_.rate_sum = Vector3::Zero();
   s_.window_time = 0.0;

@@ -57,6 +57,8 @@ namespace geocomp::dem {
 /// gamma_n) or from the restitution; k_t given or a ratio of k_n; c_t given, a ratio of c_n,
 /// or by default c_n times k_t/k_n) or hertz-mindlin (S4, damping from the restitution).
 ContactModel make_contact_model(const ContactParameters &c);
+/// The case's law on a system: make_contact_model(c), wall bonding and the walls that bond.
+void set_contact_law(DemSystem &system, const ContactParameters &c);
 
 /// A DemSystem holding the packing in its box (six walls with mu_p, spheres with the
 /// packing's density and its velocities when it has them), the contact law, mu_s, the skin
@@ -149,7 +151,8 @@ public:
     kLoveWeberXX, kLoveWeberYY, kLoveWeberZZ, kLoveWeberXY, kLoveWeberYZ, kLoveWeberXZ, kLoveWeberMean,
     kCoordination, kMechanicalCoordination, kWallContacts, kFabricXX, kFabricYY, kFabricZZ,
     kFabricAnisotropy, kPorosity, kKineticEnergy, kInertialNumber, kUnbalancedForceRatio, kSteps,
-    kServoDeviation, kServoReversals, kWallRateXX, kWallRateYY, kWallRateZZ, kExtraCount
+    kServoDeviation, kServoReversals, kWallRateXX, kWallRateYY, kWallRateZZ,
+    kIntactBonds, kBrokenBonds, kExtraCount
   };
 
   /// `system` must hold the six walls of add_box() as walls 0..5; its box, time and

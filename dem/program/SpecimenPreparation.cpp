@@ -43,12 +43,20 @@ double mean_wall_pressure(const DemSystem &s)
   return p / 6.0;
 }
 
-/// The case's contact law with mu_s = mu_p = 0 (S0: frictionless while the packing forms).
+/// The case's contact law with mu_s = mu_p = 0 (S0: frictionless while the packing forms)
+/// and without S3's parts: bonds, adhesion and the anchor-spring friction act from the
+/// prepared state, when the program first evaluates the case's law (S3: anchors fixed at t_0
+/// on every touching pair), not at the passing contacts of growth and consolidation; the
+/// packing rests with Coulomb friction (a stick-slip law, k_phi = 0, never comes to rest).
+/// So every S3 variant of a case starts from the same packing.
 ContactParameters frictionless(const ContactParameters &c)
 {
   ContactParameters f = c;
   f.particle_friction = 0.0;
   f.wall_friction = 0.0;
+  f.cohesion = 0.0;
+  f.adhesion = 0.0;
+  f.tangential_model = "coulomb";
   return f;
 }
 
@@ -415,6 +423,7 @@ PreparedSpecimen prepare_specimen(const DemCase &c, const PreparationCriteria &k
   rec.consolidation.wall_seconds = seconds_since(t_consolidation);
 
   PreparedSpecimen out{engine.system(), {}};
+  set_contact_law(out.system, c.contact); // S3 bonds form at the first step from here
   for (std::size_t w = 0; w < out.system.n_walls(); ++w)
     out.system.set_wall_velocity(w, Vec3::Zero());
   out.system.set_local_damping(c.dem.local_damping);

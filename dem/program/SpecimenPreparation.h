@@ -18,6 +18,9 @@
 //  5. isotropic consolidation to sigma_0 with the servo walls (hold_isotropic) until all
 //     three wall stresses are within `stress_tolerance` of sigma_0 and the specimen is at
 //     rest (unbalanced-force ratio and kinetic / elastic energy below the thresholds).
+// Steps 2-5 use the case's law without S3's parts (bonds, adhesion, anchor-spring friction):
+// they act from the prepared state on, so S3's bonds form on the touching pairs of the
+// consolidated packing (docs/s3-bonded.md).
 // `source = text` starts at step 3's relaxation with the file's spheres; `source = store`
 // reads a specimen from a core store (SpecimenStore.h), exactly as it was written. With
 // `preparation = as given` a text source (xyzr or LAMMPS data, with its velocities) starts
