@@ -35,27 +35,6 @@ inline ContactModel convert(const ContactModelV2& m)
   throw std::runtime_error("legacy DEM state: empty contact law");
 }
 
-struct EnergyLedgerV2
-{
-  double kinetic_translational, kinetic_rotational, elastic_normal, elastic_tangential, gravitational,
-    dissipated_damping, dissipated_friction, dissipated_local, wall_work;
-};
-
-inline EnergyLedger convert(const EnergyLedgerV2& o)
-{
-  EnergyLedger e;
-  e.kinetic_translational = o.kinetic_translational;
-  e.kinetic_rotational = o.kinetic_rotational;
-  e.elastic_normal = o.elastic_normal;
-  e.elastic_tangential = o.elastic_tangential;
-  e.gravitational = o.gravitational;
-  e.dissipated_damping = o.dissipated_damping;
-  e.dissipated_friction = o.dissipated_friction;
-  e.dissipated_local = o.dissipated_local;
-  e.wall_work = o.wall_work;
-  return e;
-}
-
 // PlaneWall before bounded walls (S4's split box added axis, half_u, half_v): the states
 // in the committed core stores hold walls in this layout; they read as unbounded walls.
 struct PlaneWallV3
@@ -156,6 +135,20 @@ inline EnergyLedger convert(const EnergyLedgerV5& o)
   e.elastic_bonds = o.elastic_bonds;
   e.wall_work = o.wall_work;
   return e;
+}
+
+struct EnergyLedgerV2
+{
+  double kinetic_translational, kinetic_rotational, elastic_normal, elastic_tangential, gravitational,
+    dissipated_damping, dissipated_friction, dissipated_local, wall_work;
+};
+
+/// Version 2 had no bond or rolling terms: they start at zero.
+inline EnergyLedger convert(const EnergyLedgerV2& o)
+{
+  return convert(EnergyLedgerV5{o.kinetic_translational, o.kinetic_rotational, o.elastic_normal, o.elastic_tangential,
+                                o.gravitational, o.dissipated_damping, o.dissipated_friction, o.dissipated_local, 0.0,
+                                0.0, 0.0, o.wall_work});
 }
 
 /// A memory array of version 3 to 5 as the current struct.

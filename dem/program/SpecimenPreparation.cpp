@@ -423,7 +423,13 @@ PreparedSpecimen prepare_specimen(const DemCase &c, const PreparationCriteria &k
   rec.consolidation.wall_seconds = seconds_since(t_consolidation);
 
   PreparedSpecimen out{engine.system(), {}};
-  set_contact_law(out.system, c.contact); // S3 bonds form at the first step from here
+  // S3 bonds form at the first step from here. A law without S3's parts is the one the
+  // preparation ran (friction set since): left alone, so the prepared lists and every
+  // S0 result keep their bits.
+  const ContactParameters prepared = frictionless(c.contact);
+  if (prepared.cohesion != c.contact.cohesion || prepared.adhesion != c.contact.adhesion ||
+      prepared.tangential_model != c.contact.tangential_model)
+    set_contact_law(out.system, c.contact);
   for (std::size_t w = 0; w < out.system.n_walls(); ++w)
     out.system.set_wall_velocity(w, Vec3::Zero());
   out.system.set_local_damping(c.dem.local_damping);
