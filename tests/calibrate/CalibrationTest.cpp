@@ -103,6 +103,29 @@ TEST(CalibrationRoundTrip, AKnotThatStartsOnItsBoundIsFittedNotRefused)
       << r.parameters[i].name;
 }
 
+TEST(CalibrationRoundTrip, AFreeDilatancyStopsAtTheFrictionAngleWhereTheCurvesAskForMore)
+{
+  // Curves whose dilatancy (30 deg) the fitted section's friction table cannot hold: phi falls
+  // to 27 deg at kappa = 0.08 there. Mohr-Coulomb needs psi <= phi at every kappa, so the fit
+  // ends at psi = 27 deg (steps past it refused, the trust region shrinks), never past it -
+  // where the case reader would refuse the calibrated section.
+  ContinuumParameters made = truth();
+  made.friction_angle.points = {{0.0, 20.0}, {0.02, 32.0}, {0.08, 35.0}};
+  made.dilatancy_angle.points = {{0.0, 0.0}, {0.02, 30.0}};
+  const std::vector<FitTarget> targets = {made_target(axial(1e5), 1e5, 0.0, 1, made),
+                                          made_target(axial(4e5), 4e5, 0.0, 3, made)};
+  CalibrationParameters c = free_five();
+  c.free_parameters = {"dilatancy[1]"};
+  ContinuumParameters start = truth(); // phi: 20, 32, 27 deg at kappa 0, 0.02, 0.08
+  start.dilatancy_angle.points[1].second = 10.0;
+  const CalibrationResult r = calibrate(start, targets, c);
+  ASSERT_EQ(r.value.size(), 1u);
+  EXPECT_LE(r.value[0], 27.0 + 1e-9);
+  EXPECT_GT(r.value[0], 26.0) << "the curves pull psi up to the friction angle";
+  EXPECT_NO_THROW(continuum::material_from_case(r.calibrated));
+  std::printf("[calibration] psi capped by phi: %.6f deg after %d iterations\n", r.value[0], r.iterations);
+}
+
 TEST(CalibrationRoundTrip, RecoversFiveParametersToOnePercentWithNoise)
 {
   const auto targets = three_confinements(0.002);
