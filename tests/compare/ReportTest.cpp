@@ -262,7 +262,7 @@ TEST(Report, HtmlNumbersEqualMetricsJsonAndPlotsArePngs)
   const fs::path dir = scratch("report");
   const ReportOutcome out = write_report(in, dir);
   EXPECT_TRUE(out.plots_made) << out.message;
-  EXPECT_EQ(out.plots.size(), 4u); // stress-strain, volumetric, stress path, one map
+  EXPECT_EQ(out.plots.size(), 3u); // stress-strain, volumetric, stress path
   for (const auto &p : out.plots) {
     const std::string bytes = read(dir / p);
     ASSERT_GT(bytes.size(), 1000u) << p;
