@@ -1,5 +1,6 @@
 #include "common/ProgramRunner.h"
 #include "common/ElasticLimitBracket.h"
+#include "common/UnloadingMeasure.h"
 
 #include <algorithm>
 #include <chrono>
@@ -378,15 +379,9 @@ void ProgramRunner::run_branch(int stage_index, const StageControl &main, const 
   b.gamma_start = gamma_max(origin.strain);
   // Level to return to: tau_max where the stage started, or the given one.
   const ResponseSample stage_start = response_.samples[stage_start_sample_[stage_index]];
-  // Unloading is measured along the deviator the branch leaves with, signed, so a path
-  // that overshoots the target through zero still stops: tau_D(s) = tau_o dev(s):d/(d:d).
-  const Tensor3 d = origin.stress - mean_stress(origin.stress) * Tensor3::Identity();
-  const double dd = (d.array() * d.array()).sum();
-  auto along = [&](const Tensor3 &stress) {
-    const Tensor3 dev = stress - mean_stress(stress) * Tensor3::Identity();
-    return dd > 0.0 ? b.tau_start * (dev.array() * d.array()).sum() / dd : tau_max(stress);
-  };
-  b.tau_target = stage.unload_to_start ? along(stage_start.stress) : stage.unload_to_tau;
+  // Unloading is measured along the deviator the branch leaves with (UnloadingMeasure.h).
+  const UnloadingMeasure along(origin.stress);
+  b.tau_target = along.target(stage, stage_start.stress);
 
   StageControl reverse = main;
   reverse.t0 = origin.time;

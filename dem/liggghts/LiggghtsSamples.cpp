@@ -1,6 +1,7 @@
 #include "dem/liggghts/LiggghtsSamples.h"
 
 #include "common/ProgramRunner.h"
+#include "common/UnloadingMeasure.h"
 
 #include <algorithm>
 #include <cmath>
@@ -196,12 +197,7 @@ void place_branches(Response &r, const std::vector<ResponseSample> &rows, const 
       const ResponseSample o = r.samples[origin], start = r.samples[stage_start[line.stage]];
       b.tau_start = tau_max(o.stress);
       b.gamma_start = gamma_max(o.strain);
-      const Tensor3 d = o.stress - mean_stress(o.stress) * Tensor3::Identity();
-      const double dd = (d.array() * d.array()).sum();
-      const Tensor3 dev = start.stress - mean_stress(start.stress) * Tensor3::Identity();
-      b.tau_target = !stage.unload_to_start ? stage.unload_to_tau
-                     : dd > 0.0             ? b.tau_start * (dev.array() * d.array()).sum() / dd
-                                            : tau_max(start.stress);
+      b.tau_target = UnloadingMeasure(o.stress).target(stage, start.stress);
       for (const ResponseSample &s : rows)
         if (s.branch == id)
           r.samples.push_back(s);
