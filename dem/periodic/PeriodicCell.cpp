@@ -112,12 +112,13 @@ void PeriodicCell::drift(double dt)
     l_step_ = ldt;
   }
   cell_.deform(a_);
+  const Vec3 spin = affine_spin(l_);  // the grains turn with the cell (PeriodicContactPass.h)
   const Mat3 f = cell_.h() * h_ref_inv_;  // deformation since the last build
   double d2_max = 0.0;
   for (std::size_t p = 0; p < store_.size(); ++p) {
     const Vec3 x = a_ * store_.x[p] + dt * store_.v[p];  // affine drift
     store_.x[p] = x;
-    rotate_orientation(store_.orientation[p], store_.omega[p], dt);
+    rotate_orientation(store_.orientation[p], Vec3(store_.omega[p] + spin), dt);
     d2_max = std::max(d2_max, (x - f * x_ref_[p]).squaredNorm());
   }
   const double e = (f.inverse() - Mat3::Identity()).norm();

@@ -17,7 +17,9 @@
 // keeps its reduced coordinates $H^{-1}x$ exactly as H follows $e^{Lt}H_0$. The affine field
 // carries no inertia (the quasi-static RVE: $\dot u = F/m$, the $\dot L x$ and $L\dot x$ terms
 // of the lab acceleration are dropped; they are $O(\dot\varepsilon^2 x)$ against
-// contact accelerations). Spins are absolute. The positions are wrapped into the cell at
+// contact accelerations). Spins split the same way: the lab spin is $\omega + w$, w the
+// axial vector of skw L (the affine field's rotation; PeriodicContactPass.h), and the
+// particles store the fluctuation $\omega$. The positions are wrapped into the cell at
 // each neighbour build (u does not jump; the lab velocity's jump $LHn$ is the shift term
 // the contact kinematics carry).
 //

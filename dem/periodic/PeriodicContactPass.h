@@ -6,8 +6,13 @@
 // of the two centres is
 // $$ (u_j + L(x_j + Hn)) - (u_i + Lx_i) = u_j - u_i + L\,l,\qquad l = x_j + Hn - x_i
 //    \qquad\text{(affine field; the } LHn \text{ shift term is inside } Ll), $$
-// so sphere_sphere_kinematics() gets $v_i = u_i$, $v_j = u_j + Ll$ and the branch l; spins
-// are absolute. The force on j is $F = F_n n + F_t$ (-F on i), the torques
+// so sphere_sphere_kinematics() gets $v_i = u_i$, $v_j = u_j + Ll$ and the branch l. The
+// affine field turns the grains with the cell's spin too: the lab spin is $\omega + w$,
+// $w$ the axial vector of $\tfrac12(L - L^T)$ (the stored $\omega$ is the fluctuation, as u
+// is), so a rigid rotation of the cell, $L = W$, moves no contact point relative to the two
+// surfaces ($Wl = w\times l$ is cancelled by the spin terms) and the stress turns with the
+// cell instead of loading the tangential springs. Rolling laws see $\omega_j - \omega_i$,
+// the same either way. The force on j is $F = F_n n + F_t$ (-F on i), the torques
 // $T = -(R - \delta/2)\,n\times F_t$ on each (plus $\pm M_r$ for rolling laws), as in the
 // wall-box engine (ContactPass.cpp). The same loop sums the Love-Weber stress, its
 // elastic share (the normal spring $F_n^{el}$ and the tangential force) and the servo
@@ -35,6 +40,12 @@ struct PeriodicPassInput
   double mu = 0.0;                ///< Coulomb friction coefficient
 };
 
+/// The spin of the affine field: the axial vector w of skw L (skw L x = w x x).
+inline Vec3 affine_spin(const Mat3& l)
+{
+  return 0.5 * Vec3(l(2, 1) - l(1, 2), l(0, 2) - l(2, 0), l(1, 0) - l(0, 1));
+}
+
 /// Zeroes the loads, adds every contact's load to its two spheres and fills `out`'s
 /// contact, skew and stiffness parts, contact count and mean contact force.
 template <class Law>
@@ -48,6 +59,7 @@ void periodic_contact_pass(const Law& law, const PeriodicPassInput& in, CellStre
     s.torque[p].setZero();
   }
   const Mat3& h = in.cell.h();
+  const Vec3 spin = affine_spin(in.velocity_gradient);
   Mat3 fl = Mat3::Zero(), fl_elastic = Mat3::Zero(), stiff = Mat3::Zero();
   double force_sum = 0.0;
   std::size_t carrying = 0;
@@ -65,7 +77,7 @@ void periodic_contact_pass(const Law& law, const PeriodicPassInput& in, CellStre
     }
     ContactKinematics k;
     const Vec3 vj = s.v[j] + in.velocity_gradient * l;  // affine field
-    sphere_sphere_kinematics(k, l, std::sqrt(r2), s.radius[i], s.radius[j], s.v[i], vj, s.omega[i], s.omega[j],
+    sphere_sphere_kinematics(k, l, std::sqrt(r2), s.radius[i], s.radius[j], s.v[i], vj, s.omega[i] + spin, s.omega[j] + spin,
                              s.inv_mass[i], s.inv_mass[j]);
     k.overlap_old = nl.overlap[c];
     k.dt = in.dt;
