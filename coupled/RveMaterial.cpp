@@ -2,6 +2,8 @@
 
 #include "continuum/models/Mandel.h"
 
+#include <unsupported/Eigen/MatrixFunctions>
+
 #include <stdexcept>
 
 namespace geocomp::coupled {
@@ -55,6 +57,16 @@ dem::Mat3 RveMaterial::velocity_gradient(const Vector6 &increment, std::uint64_t
   return continuum::from_mandel(increment) / (double(n) * time_step); // L = d eps / (n dt)
 }
 
+dem::Mat3 RveMaterial::finite_velocity_gradient(const continuum::Matrix3 &increment, std::uint64_t n, double time_step)
+{
+  const double det = increment.determinant();
+  const dem::Mat3 log = det > 0.0 ? dem::Mat3(increment.log()) : dem::Mat3::Constant(std::nan(""));
+  if (!log.allFinite() || !(log.exp() - increment).isZero(1e-9 * increment.norm()))
+    throw continuum::ReturnMapFailure("dem rve: the deformation increment has no real logarithm (det = " +
+                                      std::to_string(det) + ")");
+  return log / (double(n) * time_step); // L = ln(F_{n+1} F_n^-1) / (n dt)
+}
+
 Vector6 RveMaterial::stress(const dem::PeriodicCell &cell) { return continuum::to_mandel(cell.stress().total()); }
 
 // The orthotropic part of C_ijkl = (1/V) sum k_n |l|^2 n_i n_j n_k n_l from K_ab = C_abab = C_aabb;
@@ -94,6 +106,33 @@ continuum::PointStateUpdate RveMaterial::advance(const Vector6 &total_strain,
   u.stress = stress(trial->cell);
   u.tangent = tangent(trial->cell);
   u.state = std::move(trial);
+  return u;
+}
+
+continuum::FiniteStrainUpdate RveMaterial::advance_finite(const continuum::Matrix3 &F,
+                                                          const continuum::FiniteStrainHistory &old) const
+{
+  const auto *committed = dynamic_cast<const RveState *>(old.state.get());
+  if (!committed)
+    throw std::logic_error("dem rve: the point state is not an RVE's");
+  const continuum::Matrix3 increment = F * committed->deformation_gradient.inverse();
+  const dem::PeriodicCell *cell = &committed->cell;
+  continuum::FiniteStrainUpdate u;
+  u.history.state = old.state;
+  if (F != committed->deformation_gradient) {
+    auto trial = std::make_shared<RveState>(*committed); // the committed cell is never touched
+    trial->deformation_gradient = F;
+    const std::uint64_t n = p_.steps_per_increment;
+    trial->cell.set_velocity_gradient(finite_velocity_gradient(increment, n, trial->cell.parameters().time_step));
+    trial->cell.run(n);
+    cell = &trial->cell;
+    u.history.state = std::move(trial);
+  }
+  u.jacobian = F.determinant();
+  u.kirchhoff_stress = u.jacobian * cell->stress().total();
+  u.logarithmic_tangent = tangent(*cell);
+  u.spatial_tangent = continuum::jaumann_spatial_tangent(u.logarithmic_tangent, u.kirchhoff_stress, u.jacobian);
+  u.history.deformation_gradient = F;
   return u;
 }
 

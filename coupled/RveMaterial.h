@@ -30,6 +30,18 @@
 // semi-definite as principal blocks of a PSD tensor. It omits the tangential springs and the
 // non-affine relaxation of the packing, so it is not the consistent tangent: the FE Newton
 // converges linearly with it (a quasi-Newton).
+// Driving (finite strain). From the committed cell at F_n to the Newton iterate's F_{n+1},
+// the copy is driven over the same n steps by the constant velocity gradient
+// $$ L = \frac{\ln(F_{n+1}F_n^{-1})}{n\,\Delta t}, $$
+// (the principal matrix logarithm, spin included), so its cell matrix ends at
+// $H_{n+1} = e^{nL\Delta t}H_n = F_{n+1}F_n^{-1}H_n$ to round-off: the cell follows the
+// point's deformation exactly, rotation included, whatever the size of the increment. The
+// stress is the cell's Love-Weber (Cauchy) stress in the lab frame, tau = J sigma, and the
+// spatial tangent is the rate form's (PointStateModel.h, jaumann_spatial_tangent) with the
+// contact-stiffness tangent below as C: the grains turn with the cell's spin through their
+// contacts (their spins are absolute), so a rotated cell's stress co-rotates - to within
+// what the tangential springs lag (measured in docs/coupled.md).
+//
 // `elasticity()` (the FE cube's reference stiffness: residual floor, prestrain, localization
 // scan) is the isotropic projection of the prepared cell's tangent:
 // $K = C_{iijj}/9$, $G = (C_{ijij} - C_{iijj}/3)/10$.
@@ -47,11 +59,13 @@ struct RveParameters {
   std::uint64_t steps_per_increment = 200; ///< n >= 1: DEM steps over one strain increment
 };
 
-/// The point state: the cell and the total strain it was driven to.
+/// The point state: the cell and the total strain (small strain) or deformation gradient
+/// (finite strain) it was driven to.
 struct RveState : continuum::PointState {
   RveState(dem::PeriodicCell c, const continuum::Vector6 &e) : cell(std::move(c)), strain(e) {}
   dem::PeriodicCell cell;
-  continuum::Vector6 strain; ///< eps_n (Mandel) of the caller
+  continuum::Vector6 strain;                                                       ///< eps_n (Mandel) of the caller
+  continuum::Matrix3 deformation_gradient = continuum::Matrix3::Identity();        ///< F_n of the caller
 };
 
 class RveMaterial : public continuum::PointStateModel {
@@ -63,6 +77,8 @@ public:
   std::shared_ptr<const continuum::PointState> initial_state(const continuum::Vector6 &initial_strain) const override;
   continuum::PointStateUpdate advance(const continuum::Vector6 &total_strain,
                                       const std::shared_ptr<const continuum::PointState> &old) const override;
+  continuum::FiniteStrainUpdate advance_finite(const continuum::Matrix3 &deformation_gradient,
+                                               const continuum::FiniteStrainHistory &old) const override;
 
   const continuum::IsotropicElasticity &elasticity() const override { return elastic_; }
   std::string name() const override { return "dem_rve"; }
@@ -72,6 +88,10 @@ public:
 
   /// The velocity gradient that drives a cell by the strain increment (Mandel) over n steps.
   static dem::Mat3 velocity_gradient(const continuum::Vector6 &increment, std::uint64_t n, double time_step);
+  /// The velocity gradient ln(F_inc) / (n dt) that takes a cell through the deformation
+  /// increment F_inc = F_{n+1} F_n^{-1} over n steps; throws continuum::ReturnMapFailure
+  /// when F_inc has no real logarithm (det <= 0 or a rotation by pi).
+  static dem::Mat3 finite_velocity_gradient(const continuum::Matrix3 &increment, std::uint64_t n, double time_step);
   /// Stress (Mandel, tension positive) and tangent of a cell as this model reports them.
   static continuum::Vector6 stress(const dem::PeriodicCell &cell);
   static continuum::Matrix6 tangent(const dem::PeriodicCell &cell);

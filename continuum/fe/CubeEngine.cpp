@@ -244,10 +244,6 @@ void CubeEngine::Impl::setup_quadrature_data()
   materials[base] = factory->make(base);
   if (prm.imperfection_radius > 0.0)
     materials[weak] = factory->make(weak);
-  if (prm.kinematics == Kinematics::finite_strain && dynamic_cast<const PointStateModel *>(materials[base].get()))
-    throw std::invalid_argument("continuum cube: the material '" + materials[base]->name() +
-                                "' keeps its own point state and takes small strains only: set 'kinematics' to "
-                                "'small strain'");
   elastic_tangent = materials[base]->elasticity().stiffness();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)

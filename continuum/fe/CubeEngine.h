@@ -27,7 +27,7 @@
 // state of the current iteration, committed only after convergence, so cut-backs and the
 // engine's save()/restore() are exact. A material that owns its point state
 // (continuum/models/PointStateModel.h, e.g. a DEM cell per point) rides in the same history
-// and gets the same commit/cut-back/save semantics; it takes small strains only.
+// and gets the same commit/cut-back/save semantics, at small or finite strain.
 //
 // Response. Wall stress sigma_aa = (sum of the internal nodal forces in direction a on the
 // face x_a = L) / (area of that face): at finite strain its CURRENT area projected on the

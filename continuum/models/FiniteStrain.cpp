@@ -1,5 +1,6 @@
 #include "continuum/models/FiniteStrain.h"
 
+#include "continuum/models/PointStateModel.h"
 #include "continuum/models/SpectralDecomposition.h"
 
 #include <cmath>
@@ -93,6 +94,8 @@ FiniteStrainUpdate finite_strain_update(const ConstitutiveModel &model, const Ma
     msg << "finite strain: det F = " << J << " (an inverted or degenerate point)";
     throw ReturnMapFailure(msg.str());
   }
+  if (const auto *point = dynamic_cast<const PointStateModel *>(&model))
+    return point->advance_finite(F, old);
   // Elastic predictor (DSPO ch. 14): b^e_trial = F_inc b^e_n F_inc^T.
   const Matrix3 F_inc = F * old.deformation_gradient.inverse();
   const Matrix3 b_trial = F_inc * old.elastic_left_cauchy_green * F_inc.transpose();
@@ -135,6 +138,10 @@ FiniteStrainUpdate finite_strain_update(const ConstitutiveModel &model, const Ma
 FiniteStrainHistory initial_finite_strain_history(const ConstitutiveModel &model, const Matrix3 &initial_stress)
 {
   FiniteStrainHistory h;
+  if (const auto *point = dynamic_cast<const PointStateModel *>(&model)) {
+    h.state = point->initial_state(Vector6::Zero());
+    return h;
+  }
   const Matrix3 eps_e = from_mandel(model.elasticity().compliance() * to_mandel(initial_stress));
   h.elastic_left_cauchy_green = symmetric_exp(2.0 * eps_e);
   return h;

@@ -50,6 +50,9 @@ struct FiniteStrainHistory {
   Matrix3 deformation_gradient = Matrix3::Identity();      ///< F_n
   Matrix3 elastic_left_cauchy_green = Matrix3::Identity(); ///< b^e_n = F^e_n F^e_n^T
   double kappa = 0.0;                                      ///< hardening variable (as the model)
+  /// A point-state model's own state at F_n (PointStateModel.h: a DEM cell, ...); null for
+  /// the plasticity models, whose state is b^e and kappa.
+  std::shared_ptr<const PointState> state;
 };
 
 /// Everything one finite-strain update produces.
@@ -72,11 +75,13 @@ struct FiniteStrainUpdate {
 };
 
 /// The update of `model` from `old` to the deformation gradient F (det F > 0). Throws
-/// ReturnMapFailure when the return fails or F is not orientation preserving.
+/// ReturnMapFailure when the return fails or F is not orientation preserving. A
+/// PointStateModel answers through its own advance_finite() (no b^e, no return map).
 FiniteStrainUpdate finite_strain_update(const ConstitutiveModel &model, const Matrix3 &F,
                                         const FiniteStrainHistory &old);
 
-/// A point at rest (F = I) under an initial stress: b^e = exp(2 D^-1 : sigma_0).
+/// A point at rest (F = I) under an initial stress: b^e = exp(2 D^-1 : sigma_0); a
+/// PointStateModel's virgin state instead (its stress is its own).
 FiniteStrainHistory initial_finite_strain_history(const ConstitutiveModel &model,
                                                   const Matrix3 &initial_stress);
 

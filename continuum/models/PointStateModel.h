@@ -17,12 +17,23 @@
 //    converged; a cut-back drops the trial states (the committed ones are intact);
 //  - save/restore: a saved history shares the committed state, and restoring it makes that
 //    state current again (exact, nothing is re-simulated).
-// Small strain only: eps is the total (small) strain the engines already pass; a finite
-// strain caller (FiniteStrain.h's exponential map) is refused by the FE cube.
+// Small strain: eps is the total (small) strain the engines pass, and the state records
+// eps_n. Finite strain: finite_strain_update() (FiniteStrain.h) hands the deformation
+// gradient F_{n+1} to advance_finite(), the state records F_n, and the model returns the
+// Kirchhoff stress tau = J sigma and a spatial tangent J a with (J a) : H ~ d tau - tau H^T
+// for F -> (I + H) F, the measure the total-Lagrangian cube assembles. For a model that
+// answers in a rate form (its Cauchy stress rate co-rotating with the spin W = skw H, as a
+// cell whose grains turn with the deformation: a Jaumann rate)
+// $$ \dot\sigma = C : D + W\sigma - \sigma W,\qquad \dot J = J\,\mathrm{tr}\,D, $$
+// the spatial tangent follows in closed form (jaumann_spatial_tangent below):
+// $$ (Ja)_{ijkl} = J C_{ijkl} + \tfrac12(\delta_{ik}\tau_{jl} - \delta_{il}\tau_{jk}
+//    - \tau_{ik}\delta_{jl} + \tau_{il}\delta_{jk}) + \tau_{ij}\delta_{kl} - \tau_{il}\delta_{jk}. $$
+// A pure spin H = W then gives (J a) : W = W tau, the rotation of tau to first order.
 // The stress is the model's; the tangent is whatever the model documents (it need not be
 // consistent: the caller's Newton then converges linearly, a quasi-Newton). There is no
 // yield surface: region `elastic`, kappa 0, yield_function -1.
 #include "continuum/models/ConstitutiveModel.h"
+#include "continuum/models/FiniteStrain.h"
 
 #include <memory>
 
@@ -49,6 +60,14 @@ public:
   /// `old` as it is (it may return `old` itself when nothing changes).
   virtual PointStateUpdate advance(const Vector6 &total_strain, const std::shared_ptr<const PointState> &old) const = 0;
 
+  /// Finite strain: from the committed state `old` (at F_n, which it records; the virgin
+  /// state is at F = I) to the deformation gradient F_{n+1} (det F > 0): Kirchhoff stress,
+  /// jacobian, spatial tangent, `logarithmic_tangent` = the model's own tangent (Mandel),
+  /// history {F_{n+1}, state}, region elastic. Must leave `old` as it is. Throws
+  /// ReturnMapFailure when it cannot follow F (the cube then cuts the step back).
+  virtual FiniteStrainUpdate advance_finite(const Matrix3 &deformation_gradient,
+                                            const FiniteStrainHistory &old) const = 0;
+
   /// The history holding initial_state(initial_strain).
   PlasticHistory initial_history(const Vector6 &initial_strain) const final;
   /// advance() on old.state; throws std::logic_error when the history holds no state (a
@@ -57,5 +76,9 @@ public:
   /// No yield surface: always admissible.
   double yield_function(const Vector6 &, double) const override { return -1.0; }
 };
+
+/// J a of a rate-form point (the file comment): C the tangent of the Cauchy stress in D
+/// (Mandel), tau the Kirchhoff stress, J = det F. Row 3i+j, column 3k+l (FiniteStrain.h).
+Matrix9 jaumann_spatial_tangent(const Matrix6 &tangent, const Matrix3 &kirchhoff_stress, double jacobian);
 
 } // namespace geocomp::continuum
