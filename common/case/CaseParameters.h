@@ -26,7 +26,7 @@ struct CaseHead {
   std::string file;                     ///< as given on the command line
   std::string text;                     ///< whole file, stored in every results file
   std::string title;
-  std::vector<std::string> engines;     ///< dem, continuum, material-point
+  std::vector<std::string> engines;     ///< dem, continuum, material-point, fem-dem, liggghts
   unsigned long long seed = 1;
 
   template <class Self, class Visitor>

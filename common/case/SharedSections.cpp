@@ -60,9 +60,11 @@ std::vector<std::pair<double, double>> parse_points(const std::string &text, con
 void declare_head(dealii::ParameterHandler &prm)
 {
   prm.declare_entry("title", "", Anything(), "A title for reports.");
-  prm.declare_entry("engines", "dem, continuum", dealii::Patterns::MultipleSelection("dem|continuum|material-point|liggghts"),
+  prm.declare_entry("engines", "dem, continuum", dealii::Patterns::MultipleSelection("dem|continuum|material-point|fem-dem|liggghts"),
                     "Engines that run the program: 'dem', 'continuum' (deal.II cube), 'material-point' "
-                    "(the continuum model at one point), 'liggghts' (the DEM specimen in LIGGGHTS, "
+                    "(the continuum model at one point), 'fem-dem' (the continuum section's cube with a periodic DEM "
+                    "cell of the specimen's grains at every quadrature point, section 'dem rve'; docs/coupled.md), "
+                    "'liggghts' (the DEM specimen in LIGGGHTS, "
                     "Debian package liggghts; docs/liggghts.md).");
   prm.declare_entry("seed", "1", dealii::Patterns::Integer(0), "Random seed: the same seed gives the same specimen and curves.");
 }

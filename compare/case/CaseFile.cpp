@@ -120,7 +120,7 @@ CaseDescription parse_case(const std::string &text, const std::string &path)
   try {
     CaseHead::visit(static_cast<CaseHead &>(c), sections::ReadEntries{prm, reader, ""});
     if (c.engines.empty())
-      reader.fail("engines", "expected at least one of dem, continuum, material-point, liggghts");
+      reader.fail("engines", "expected at least one of dem, continuum, material-point, fem-dem, liggghts");
     sections::parse_dem_sections(prm, reader, c);
     c.continuum = sections::parse_continuum(prm, reader);
     c.rve = sections::parse_dem_rve(prm, reader);

@@ -73,7 +73,7 @@ Command check_command()
 const std::vector<Command> &commands()
 {
   static const std::vector<Command> all = {
-    pair_command(),    dem_command(),   liggghts_command(),   material_point_command(), continuum_command(), report_command(),
+    pair_command(),    dem_command(),   liggghts_command(),   material_point_command(), continuum_command(), fem_dem_command(), report_command(),
     compare_command(), calibrate_command(), sweep_command(), study_command(), pack_command(), export_command(), import_command(), rate_sweep_command(), crush_command(), shear_box_command(), check_command(), print_parameters_command()};
   return all;
 }

@@ -16,14 +16,18 @@ namespace geocomp::cli {
 
 void validate_engine(const std::string &name, const CaseDescription &c)
 {
+  if (name == "fem-dem") { // the cube of the continuum section, the RVE of section 'dem rve'
+    try {
+      coupled::rve_grains(c);
+      continuum::check_cube_parameters(cube_parameters(c, ""));
+    } catch (const std::invalid_argument &e) {
+      throw CaseError(c.file, "dem rve", e.what());
+    }
+    return;
+  }
   if (name == "material-point" || name == "continuum") {
     continuum_material(c);
-    if (c.continuum.model == "dem rve" && name == "material-point")
-      throw CaseError(c.file, "continuum/model",
-                      "dem rve (FEM x DEM) runs on the continuum engine (the FE cube), not on the material point");
     try {
-      if (c.continuum.model == "dem rve")
-        coupled::rve_grains(c);
       material_point_parameters(c);
       if (name == "continuum")
         continuum::check_cube_parameters(cube_parameters(c, ""));

@@ -44,6 +44,7 @@ Command dem_command();
 Command liggghts_command();
 Command material_point_command();
 Command continuum_command();
+Command fem_dem_command();
 Command pair_command();
 Command report_command();
 Command compare_command();

@@ -120,8 +120,8 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
     snapshots = std::make_unique<SnapshotRecorder>(*d, c, dir);
     dem_section = std::make_unique<DemSectionRecorder>(*d, c, dir);
   }
-  if (const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get()))
-    cube_section = std::make_unique<CubeSectionRecorder>(*cube, settings.comm);
+  if (const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get()); cube && engine == "continuum")
+    cube_section = std::make_unique<CubeSectionRecorder>(*cube, settings.comm); // the maps' FE column
   runner.on_progress([&](const RunProgress &p) {
     if (snapshots)
       (*snapshots)(p);

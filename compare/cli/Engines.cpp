@@ -91,7 +91,7 @@ std::unique_ptr<dem::DemEngine> make_dem_engine(const CaseDescription &c, const 
 
 const std::vector<std::string> &engine_names()
 {
-  static const std::vector<std::string> names = {"material-point", "continuum", "dem", "liggghts"};
+  static const std::vector<std::string> names = {"material-point", "continuum", "fem-dem", "dem", "liggghts"};
   return names;
 }
 
@@ -106,7 +106,8 @@ continuum::MaterialPointParameters material_point_parameters(const CaseDescripti
   return p;
 }
 
-continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::string &output_dir)
+continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::string &output_dir,
+                                          const std::string &fields_folder)
 {
   continuum::CubeParameters p;
   p.side = box_size(c.specimen);
@@ -127,7 +128,7 @@ continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::s
   p.steps_per_advance = c.continuum.load_steps_per_sample;
   p.band_reference_width = c.continuum.reference_element_size;
   if (c.output.fields)
-    p.output_directory = output_dir + "/continuum-fields";
+    p.output_directory = output_dir + "/" + fields_folder;
   return p;
 }
 
@@ -138,15 +139,16 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
   log::debug(name + ": setting up the engine of " + c.file);
   if (name == "material-point")
     return std::make_unique<continuum::MaterialPointEngine>(continuum_material(c), material_point_parameters(c));
-  if (name == "continuum" && c.continuum.model == "dem rve") { // FEM x DEM (docs/coupled.md)
-    log::info("continuum: preparing the RVE of every quadrature point (" + std::to_string(c.rve.particles) +
+  if (name == "fem-dem") { // FEM x DEM: the continuum section's cube, an RVE per point (docs/coupled.md)
+    log::info("fem-dem: preparing the RVE of every quadrature point (" + std::to_string(c.rve.particles) +
               " spheres)");
-    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir),
+    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir, "fem-dem-fields"),
                                                    continuum::fixed_material(coupled::make_rve_material(c, c.rve)),
                                                    communicator);
   }
   if (name == "continuum")
-    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir), continuum_material(c), communicator);
+    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir, "continuum-fields"),
+                                                   continuum_material(c), communicator);
   if (name == "dem")
     return make_dem_engine(c, output_dir);
   if (name == "liggghts")

@@ -38,7 +38,10 @@ continuum::MaterialParameters continuum_material(const CaseDescription &c);
 /// The engines' own parameters as make_engine() builds them from a case (the validation
 /// builds the same ones and checks them, CaseValidation.h).
 continuum::MaterialPointParameters material_point_parameters(const CaseDescription &c);
-continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::string &output_dir);
+/// The cube's parameters from the continuum section; its VTU fields go to
+/// `<output_dir>/<fields_folder>` (continuum-fields, fem-dem-fields) when output/fields is on.
+continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::string &output_dir,
+                                          const std::string &fields_folder = "continuum-fields");
 
 /// File name of an engine's results inside the output folder.
 std::string results_file(const std::string &engine);

@@ -27,6 +27,8 @@ std::string engine_label(const std::string &engine)
     return "FE cube";
   if (engine == "liggghts")
     return "LIGGGHTS";
+  if (engine == "fem-dem")
+    return "FEM x DEM";
   return "material point";
 }
 

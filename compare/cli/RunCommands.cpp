@@ -169,6 +169,15 @@ Command continuum_command()
                         "`mpirun -np N geocomp continuum <case>`), with VTU field output per sample.\n");
 }
 
+Command fem_dem_command()
+{
+  return engine_command("fem-dem", "run FEM x DEM: the continuum section's cube, a DEM cell at every point (mpirun -np N)",
+                        "Runs the case's loading program on the finite-element cube of the continuum section\n"
+                        "(mesh, kinematics, solver) whose every quadrature point is a periodic DEM cell of the\n"
+                        "specimen's grains (section 'dem rve': prepared to the specimen's pressure and driven by\n"
+                        "the point's deformation; docs/coupled.md), with VTU fields in fem-dem-fields/.\n");
+}
+
 Command pair_command()
 {
   Command c;

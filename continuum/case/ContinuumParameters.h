@@ -62,7 +62,7 @@ struct NikolaevskyParameters {
 };
 
 struct ContinuumParameters {
-  std::string model = "mohr-coulomb";   ///< mohr-coulomb | drucker-prager | nikolaevsky | dem rve (coupled/case)
+  std::string model = "mohr-coulomb";   ///< mohr-coulomb | drucker-prager | nikolaevsky
   std::string dp_matching = "outer";    ///< outer | inner | plane-strain
   double youngs_modulus = 200.0e6;      ///< [Pa]
   double poisson_ratio = 0.25;

@@ -18,13 +18,12 @@ using dealii::Patterns::Selection;
 void declare_continuum(dealii::ParameterHandler &prm)
 {
   prm.enter_subsection("continuum");
-  prm.declare_entry("model", "mohr-coulomb", Selection("mohr-coulomb|drucker-prager|nikolaevsky|dem rve"),
+  prm.declare_entry("model", "mohr-coulomb", Selection("mohr-coulomb|drucker-prager|nikolaevsky"),
                     "Constitutive model: Mohr-Coulomb with hardening/softening, Drucker-Prager matched to it, "
                     "nikolaevsky: S1's quasi-static model (Mises-Schleicher yield, Nikolaevsky non-associated flow, "
                     "linear hardening; docs/s1-kinetic-model.md), whose material is subsection nikolaevsky: the "
-                    "entries E, nu, cohesion, friction and dilatancy angle below are then not used; or dem rve: "
-                    "FEM x DEM, a periodic DEM cell of the specimen's grains at every quadrature point of the "
-                    "continuum engine (section 'dem rve', docs/coupled.md; small strain only).");
+                    "entries E, nu, cohesion, friction and dilatancy angle below are then not used. (FEM x DEM, the "
+                    "engine 'fem-dem', runs this section's cube with a DEM cell at every point: section 'dem rve'.)");
   prm.declare_entry("drucker prager matching", "outer", Selection("outer|inner|plane-strain"),
                     "How Drucker-Prager is matched to the Mohr-Coulomb c and phi.");
   prm.declare_entry("youngs modulus", "200e6", Double(1e3, 1e13),
@@ -94,8 +93,6 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   ContinuumParameters::visit(p, ReadEntries{prm, r, "continuum"});
   p.nikolaevsky = parse_nikolaevsky(prm, r);
   prm.leave_subsection();
-  if (p.model == "dem rve" && p.kinematics == "finite strain")
-    r.fail("continuum/kinematics", "model = dem rve takes small strains only: set kinematics = small strain");
   if (p.volumetric_integration == "b-bar" && p.kinematics == "finite strain")
     r.fail("continuum/volumetric integration", "b-bar is a small-strain method: set kinematics = small strain");
   for (const auto &[k, c] : p.cohesion.points)

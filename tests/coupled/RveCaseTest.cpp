@@ -1,5 +1,6 @@
-// continuum/model = dem rve through the case file and the command line's engine factory:
-// the single-element cube the case makes equals the case's RVE driven alone.
+// The fem-dem engine through the case file and the command line's engine factory: the
+// single-element cube the case makes equals the case's RVE driven alone, at small and at
+// finite strain.
 #include "compare/case/CaseDescription.h"
 #include "compare/cli/CaseValidation.h"
 #include "compare/cli/Engines.h"
@@ -15,7 +16,7 @@ using namespace geocomp;
 namespace {
 
 const char *rve_case = R"(
-set engines = continuum
+set engines = fem-dem
 subsection specimen
   set particles          = 60
   set radius             = 1e-3
@@ -30,7 +31,6 @@ subsection contact
   set particle friction  = 0.5
 end
 subsection continuum
-  set model                 = dem rve
   set kinematics            = small strain
   set cells per edge        = 1
   set load steps per sample = 1
@@ -57,9 +57,8 @@ end
 TEST(RveCase, TheCasesSingleElementCubeOfRvesEqualsTheCasesRveDrivenAlone)
 {
   const CaseDescription c = parse_case(rve_case, "rve.prm");
-  ASSERT_EQ(c.continuum.model, "dem rve");
   const auto scratch = std::filesystem::temp_directory_path();
-  const auto engine = cli::make_engine("continuum", c, scratch.string(), MPI_COMM_SELF);
+  const auto engine = cli::make_engine("fem-dem", c, scratch.string(), MPI_COMM_SELF);
   StageControl control;
   control.stage = &c.program.stages.at(0);
   engine->begin_control(control);
@@ -86,17 +85,16 @@ TEST(RveCase, TheCasesSingleElementCubeOfRvesEqualsTheCasesRveDrivenAlone)
   EXPECT_LT(alone.stress().total()(2, 2), -1.05 * c.specimen.isotropic_pressure); // loaded
 }
 
-TEST(RveCase, DemRveAtFiniteStrainOrOnTheMaterialPointIsRefusedNamingTheEntry)
+TEST(RveCase, FemDemRunsOnTheCubeAndIsRefusedWhereTheCaseCannotPrepareItsRve)
 {
-  std::string finite = rve_case;
-  finite.replace(finite.find("small strain"), 12, "finite strain");
-  try {
-    parse_case(finite, "rve.prm");
-    FAIL() << "finite strain accepted";
-  } catch (const CaseError &e) {
-    EXPECT_NE(std::string(e.what()).find("small strain"), std::string::npos) << e.what();
-  }
   const CaseDescription c = parse_case(rve_case, "rve.prm");
-  EXPECT_THROW(cli::validate_engine("material-point", c), CaseError);
-  EXPECT_NO_THROW(cli::validate_engine("continuum", c));
+  EXPECT_NO_THROW(cli::validate_engine("fem-dem", c));
+  std::string lognormal = rve_case;
+  lognormal.replace(lognormal.find("uniform"), 7, "lognormal-mass");
+  try {
+    cli::validate_engine("fem-dem", parse_case(lognormal, "rve.prm"));
+    FAIL() << "a lognormal RVE accepted";
+  } catch (const CaseError &e) {
+    EXPECT_NE(std::string(e.what()).find("dem rve"), std::string::npos) << e.what();
+  }
 }
