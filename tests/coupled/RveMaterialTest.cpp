@@ -11,8 +11,6 @@
 #include <cstdio>
 #include <memory>
 #include <vector>
-#include <iostream>
-#include <cstdlib>
 
 using namespace geocomp;
 using namespace geocomp::coupled;
