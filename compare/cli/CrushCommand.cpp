@@ -1,10 +1,13 @@
 // `geocomp crush`: S2's particle-breakage programs (single-particle crushing, uniaxial
-// compression with cube, 4-ball or 18-ball fragment replacement).
+// compression with cube, 4-ball or 18-ball fragment replacement). After a run, and alone
+// with --report DIR, it rewrites <DIR>/report/ from every run in DIR (compare/CrushReport.h),
+// as `geocomp shear-box` does for S4: several cases run into one folder overlay there.
 #include "Commands.h"
 #include "Log.h"
 #include "OutputFolderLock.h"
 
 #include "common/AtomicFile.h"
+#include "compare/CrushReport.h"
 #include "dem/program/CrushCase.h"
 
 #include <filesystem>
@@ -13,22 +16,63 @@
 
 namespace geocomp::cli {
 
+namespace {
+
+// <dir>/report from every run in `dir` (S2 Figs. 3 and 7, the roses); false with a message on failure.
+bool refresh_crush_report(const std::string &dir)
+{
+  try {
+    const auto runs = compare::read_crush_runs(dir);
+    if (runs.empty()) {
+      log::error("crush report: no <case>_summary.tsv of a crush run in " + dir);
+      return false;
+    }
+    const compare::CrushReportOutcome o = compare::write_crush_report(runs, std::filesystem::path(dir) / "report");
+    if (!o.message.empty())
+      log::warning("crush report: " + o.message);
+    std::cout << "wrote " << o.dir.string() << "/index.html (" << runs.size() << " runs";
+    if (o.plots_made)
+      for (const std::string &p : o.plots)
+        std::cout << ", " << p;
+    std::cout << ")\n";
+    return true;
+  } catch (const std::exception &e) {
+    log::error(std::string("crush report: ") + e.what());
+    return false;
+  }
+}
+
+} // namespace
+
 Command crush_command()
 {
   Command c;
   c.name = "crush";
   c.summary = "S2 particle breakage: single-particle crushing or uniaxial compression (cube replacement)";
-  c.usage = "usage: geocomp crush <case.prm> [--output DIR] [--check] [--print-parameters]\n\n"
+  c.usage = "usage: geocomp crush <case.prm> [--output DIR] [--check] [--print-parameters]\n"
+            "       geocomp crush --report DIR\n\n"
             "Runs S2's single-particle crushing test (spheres crushed one by one between two platens)\n"
             "or its uniaxial compression of one-size spheres with breakage (docs/s2-breakage.md), and\n"
             "writes <DIR>/<case>_curve.tsv, _fragments.tsv, _gradation.tsv, _summary.tsv (and\n"
             "_crushing.tsv for single particles; _polar.tsv, _polar_summary.tsv and _polar_<state>.svg,\n"
             "the contact polar distributions of S2 Figs. 8-11 after seating, at the peak and at the\n"
-            "end, for uniaxial runs). --check only validates\n"
+            "end, for uniaxial runs), then rewrites <DIR>/report/ (index.html; gnuplot: stress-strain\n"
+            "or force-approach, gradation as S2 Fig. 7, fragment sizes per seed as S2 Fig. 3, the roses)\n"
+            "from every run in DIR; --report DIR only rewrites that report. --check only validates\n"
             "the case; --print-parameters prints every crush parameter with default and help.\n"
             "Exit 0 ok, 1 run failure, 2 bad input.\n";
   c.run = [](const std::vector<std::string> &args) {
-    const Arguments a = Arguments::parse(args, {"output"}, {"check", "print-parameters"});
+    const Arguments a = Arguments::parse(args, {"output", "report"}, {"check", "print-parameters"});
+    if (a.has("report")) {
+      if (!a.positional.empty())
+        throw UsageError("--report DIR takes no case file");
+      const std::string dir = a.get("report");
+      if (!std::filesystem::is_directory(dir)) {
+        log::error("--report: '" + dir + "' is not a folder (expected the --output folder of crush runs)");
+        return static_cast<int>(bad_input);
+      }
+      return static_cast<int>(refresh_crush_report(dir) ? ok : run_failure);
+    }
     if (a.has("print-parameters")) {
       std::cout << dem::describe_crush_parameters();
       return static_cast<int>(ok);
@@ -88,6 +132,7 @@ Command crush_command()
       for (const std::string &line : r.summary)
         std::cout << line << "\n";
       log::info("wrote " + base.string() + (r.polar.empty() ? "_*.tsv" : "_*.tsv, _polar_*.svg"));
+      refresh_crush_report(dir); // a report that cannot be drawn does not fail the run (its message is logged)
     } catch (const std::exception &e) {
       log::error(std::string("crush failed: ") + e.what());
       return static_cast<int>(run_failure);

@@ -64,6 +64,9 @@ void declare(ParameterHandler &prm)
   prm.declare_entry("maximum diameter", "30", Patterns::Double(0.0), "[mm] (S2: 30).");
   prm.declare_entry("platen speed", "0.01", Patterns::Double(0.0), "Closing speed of the two platens [m/s].");
   prm.declare_entry("seed", "1", Patterns::Integer(0), "Seed of the particle sizes.");
+  prm.declare_entry("seeds", "1", Patterns::Integer(1, 1000),
+                    "Repetitions of the whole test, each with its own cut points (S2 Fig. 3: ten seeds); "
+                    "particle i of repetition r uses the fragment seed breakage/seed + r particles + i.");
   prm.leave_subsection();
   prm.enter_subsection("uniaxial");
   prm.declare_entry("diameter", "40", Patterns::Double(0.0), "One-size particle diameter [mm] (S2: 40).");
@@ -161,6 +164,7 @@ CrushCase parse_crush_case(const std::string &text, const std::string &path)
   s.single.d_max = 1e-3 * prm.get_double("maximum diameter");
   s.single.platen_speed = positive(prm.get_double("platen speed"), "single particle/platen speed", "speed [m/s]");
   s.single.seed = std::uint64_t(prm.get_integer("seed"));
+  s.single.runs = prm.get_integer("seeds");
   prm.leave_subsection();
   if (s.single.d_max < s.single.d_min)
     fail("single particle/maximum diameter", "a diameter >= the minimum diameter");

@@ -68,75 +68,83 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 
 // @sect4{Single-particle crushing (S2 section 1.2)}
 
+/// One particle of diameter `d` in `sys` (empty) crushed between two platens until
+/// `monitor` breaks it or the platens have closed by half the diameter; appends its curve
+/// rows (particle number `index`) and returns the particle's mass.
+double crush_one(const CrushSetup& s, DemSystem& sys, BreakageMonitor& monitor, double d, double index, Table& curve)
+{
+  const double R = 0.5 * d;
+  configure(sys, s);
+  sys.add_sphere(Vec3::Zero(), R, s.density * s.density_scaling);
+  const double mass = sys.particles().mass[0];
+  PlaneWall bottom, top;
+  bottom.point = Vec3(0, 0, -R);
+  bottom.normal = Vec3::UnitZ();
+  bottom.velocity = Vec3(0, 0, 0.5 * s.single.platen_speed);
+  bottom.mu = s.contact.wall_friction;
+  top = bottom;
+  top.point = Vec3(0, 0, R);
+  top.normal = -Vec3::UnitZ();
+  top.velocity = -bottom.velocity;
+  sys.add_wall(bottom);
+  const std::size_t top_wall = sys.add_wall(top);
+  sys.set_time_step(s.time_step_safety * sys.critical_time_step());
+  // The platens may close by at most half the diameter (a particle below d_L never breaks).
+  const auto max_steps = std::uint64_t(0.5 * d / s.single.platen_speed / sys.time_step()) + 1;
+  for (std::uint64_t n = 0; n < max_steps && monitor.n_broken() == 0; ++n) {
+    sys.step();
+    if (sys.n_steps() % s.record_interval == 0)
+      curve.rows.push_back({index, 1e3 * sys.time() * s.single.platen_speed, sys.wall(top_wall).force.norm()});
+    monitor.after_step(sys);
+  }
+  return mass;
+}
+
 CrushResults single_particle(const CrushSetup& s, const std::function<void(const std::string&)>& progress)
 {
   const auto t0 = std::chrono::steady_clock::now();
   CrushResults out;
   out.curve.columns = {"particle", "approach_mm", "force_N"};
-  out.crushing.columns = {"particle", "diameter_mm", "crushing_force_N", "sigma_MPa", "children", "lost_mass_kg"};
-  out.fragments.columns = {"particle", "parent_diameter_mm", "child_diameter_mm", "relative_size"};
+  out.crushing.columns = {"particle", "diameter_mm", "crushing_force_N", "sigma_MPa", "children", "lost_mass_kg", "run"};
+  out.fragments.columns = {"particle", "parent_diameter_mm", "child_diameter_mm", "relative_size", "run"};
   std::mt19937_64 sizes(s.single.seed);
   std::uniform_real_distribution<double> size(s.single.d_min, s.single.d_max);
-  const double rho = s.density * s.density_scaling;
   std::vector<double> child_d, child_m;
   double parent_mass = 0.0, child_mass = 0.0, lost = 0.0, sigma_sum = 0.0;
   std::uint64_t steps = 0;
   int broken = 0;
-  for (int i = 0; i < s.single.particles; ++i) {
-    const double d = size(sizes), R = 0.5 * d;
+  const int total = s.single.particles * s.single.runs;
+  for (int i = 0; i < total; ++i) {
+    const double d = size(sizes), run = double(i / s.single.particles);
     DemSystem sys;
-    configure(sys, s);
-    const ParticleId id = sys.add_sphere(Vec3::Zero(), R, rho);
-    parent_mass += sys.particles().mass[0];
-    PlaneWall bottom, top;
-    bottom.point = Vec3(0, 0, -R);
-    bottom.normal = Vec3::UnitZ();
-    bottom.velocity = Vec3(0, 0, 0.5 * s.single.platen_speed);
-    bottom.mu = s.contact.wall_friction;
-    top = bottom;
-    top.point = Vec3(0, 0, R);
-    top.normal = -Vec3::UnitZ();
-    top.velocity = -bottom.velocity;
-    sys.add_wall(bottom);
-    const std::size_t top_wall = sys.add_wall(top);
-    sys.set_time_step(s.time_step_safety * sys.critical_time_step());
     BreakageMonitor::Settings b = s.breakage;
     b.seed = s.breakage.seed + std::uint64_t(i);
     BreakageMonitor monitor(b);
-    // The platens may close by at most half the diameter (a particle below d_L never breaks).
-    const auto max_steps = std::uint64_t(0.5 * d / s.single.platen_speed / sys.time_step()) + 1;
-    for (std::uint64_t n = 0; n < max_steps && monitor.n_broken() == 0; ++n) {
-      sys.step();
-      if (sys.n_steps() % s.record_interval == 0)
-        out.curve.rows.push_back({double(i), 1e3 * sys.time() * s.single.platen_speed, sys.wall(top_wall).force.norm()});
-      monitor.after_step(sys);
-    }
+    parent_mass += crush_one(s, sys, monitor, d, double(i), out.curve);
     steps += sys.n_steps();
     if (monitor.n_broken() == 0) {
-      out.crushing.rows.push_back({double(i), 1e3 * d, 0.0, 0.0, 0.0, 0.0});
+      out.crushing.rows.push_back({double(i), 1e3 * d, 0.0, 0.0, 0.0, 0.0, run});
       continue;
     }
     ++broken;
     const BreakageEvent& e = monitor.events().front();
     out.curve.rows.push_back({double(i), 1e3 * sys.time() * s.single.platen_speed, e.max_force});
     out.crushing.rows.push_back({double(i), 1e3 * d, e.max_force, 1e-6 * e.max_force / (d * d), double(e.children),
-                                 e.lost_mass});
+                                 e.lost_mass, run});
     sigma_sum += e.max_force / (d * d);
     lost += e.lost_mass;
     const ParticleStore& p = sys.particles();
     for (Index k = 0; k < p.size(); ++k) {
-      out.fragments.rows.push_back({double(i), 1e3 * d, 2e3 * p.radius[k], 2.0 * p.radius[k] / d});
+      out.fragments.rows.push_back({double(i), 1e3 * d, 2e3 * p.radius[k], 2.0 * p.radius[k] / d, run});
       child_d.push_back(2.0 * p.radius[k]);
       child_m.push_back(p.mass[k]);
       child_mass += p.mass[k];
     }
-    (void)id;
-    if (progress && (i + 1) % std::max(1, s.single.particles / 5) == 0)
-      progress("particle " + std::to_string(i + 1) + "/" + std::to_string(s.single.particles) + ", broken " +
-               std::to_string(broken));
+    if (progress && (i + 1) % std::max(1, total / 5) == 0)
+      progress("particle " + std::to_string(i + 1) + "/" + std::to_string(total) + ", broken " + std::to_string(broken));
   }
   out.gradation = gradation(child_d, child_m, s.gradation_bin);
-  out.summary = {kv("particles", s.single.particles), kv("broken", broken),
+  out.summary = {kv("particles", s.single.particles), kv("runs", s.single.runs), kv("broken", broken),
                  kv("fragments", double(child_d.size())),
                  kv("mean_sigma_at_crushing_MPa", broken ? 1e-6 * sigma_sum / broken : 0.0),
                  kv("characteristic_strength_MPa", 1e-6 * s.breakage.criterion.strength),
@@ -306,9 +314,19 @@ CrushResults uniaxial(const CrushSetup& s, const std::function<void(const std::s
 
 CrushResults run_crush(const CrushSetup& s, const std::function<void(const std::string&)>& progress)
 {
-  if (s.mode == "single particle") return single_particle(s, progress);
-  if (s.mode == "uniaxial") return uniaxial(s, progress);
-  throw std::invalid_argument("run_crush: unknown mode '" + s.mode + "'");
+  if (s.mode != "single particle" && s.mode != "uniaxial")
+    throw std::invalid_argument("run_crush: unknown mode '" + s.mode + "'");
+  CrushResults r = s.mode == "single particle" ? single_particle(s, progress) : uniaxial(s, progress);
+  // What the run was, for the report (CrushReport.h): text values, tabs and line breaks as spaces.
+  std::string title = s.title;
+  for (char& ch : title)
+    if (ch == '\t' || ch == '\n' || ch == '\r') ch = ' ';
+  const char* cut[] = {"", "plain", "squared", "cubed"};
+  const int power = s.breakage.rules.cut_power;
+  r.summary.insert(r.summary.begin(),
+                   {"title\t" + title, "program\t" + s.mode, "breakage_mode\t" + to_string(s.breakage.rules.mode),
+                    std::string("cut_point\t") + (power >= 1 && power <= 3 ? cut[power] : "?")});
+  return r;
 }
 
 void write_table(const std::string& path, const Table& t)

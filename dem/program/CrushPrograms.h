@@ -47,6 +47,10 @@ struct SingleParticleSetup
   double d_min = 0.028, d_max = 0.030;  ///< [m]
   double platen_speed = 0.01;           ///< closing speed of the platens [m/s]
   std::uint64_t seed = 1;               ///< particle sizes
+  /// Repetitions of the test (S2 Fig. 3: ten seeds); particle i of repetition r is crushed
+  /// with the fragment seed breakage.seed + r particles + i, so repetition 0 is the
+  /// single test and every particle of every repetition draws its own cut point.
+  int runs = 1;
 };
 
 struct UniaxialSetup
@@ -92,8 +96,8 @@ struct Table
 struct CrushResults
 {
   Table curve;       ///< force-displacement (single) or stress-strain (uniaxial)
-  Table crushing;    ///< single: one row per particle (d, crushing force, sigma, children)
-  Table fragments;   ///< every child of a breakage event (single) / of the first breakage (uniaxial)
+  Table crushing;    ///< single: one row per particle (d, crushing force, sigma, children, run)
+  Table fragments;   ///< every child of a breakage event (single, with its run) / every breakage event (uniaxial)
   Table gradation;   ///< percent passing by mass vs size
   std::vector<std::string> summary;  ///< "key<TAB>value" lines
   /// uniaxial: contact roses (S2 Figs. 8-11) "seated" (after seating), "peak" (the curve row

@@ -177,10 +177,11 @@ TEST(CommandLine, CalibrateRefusesTheNikolaevskyModelNamingContinuumModel)
   EXPECT_NE(r.err.find("parameter 'continuum/model'"), std::string::npos) << r.err;
 }
 
-TEST(CommandLine, CrushChecksTheFourS2CasesAndRefusesBadInputWithExitTwo)
+TEST(CommandLine, CrushChecksTheShippedS2CasesAndRefusesBadInputWithExitTwo)
 {
   const fs::path cwd = fs::temp_directory_path();
-  for (const char *name : {"s2_single_particle", "s2_uniaxial_cube", "s2_uniaxial_4ball", "s2_uniaxial_18ball"}) {
+  for (const char *name : {"s2_single_particle", "s2_single_particle_ten_seeds", "s2_uniaxial_cube", "s2_uniaxial_4ball",
+                           "s2_uniaxial_18ball"}) {
     const fs::path file = fs::absolute(source_dir() / "cases" / (std::string(name) + ".prm"));
     ASSERT_TRUE(fs::exists(file)) << file;
     const Result r = run(cwd, {"crush", file.string(), "--check"});
@@ -193,6 +194,7 @@ TEST(CommandLine, CrushChecksTheFourS2CasesAndRefusesBadInputWithExitTwo)
                      {"subsection breakage\n  set characteristic strength = 0\nend\n", "characteristic strength"},
                      {"subsection breakage\n  set minimum size = 8\n  set breakage limit = 5\nend\n", "minimum size"},
                      {"subsection single particle\n  set maximum diameter = 20\nend\n", "maximum diameter"},
+                     {"subsection single particle\n  set seeds = 0\nend\n", "seeds"},
                      {"subsection uniaxial\n  set lid speed = fast\nend\n", "lid speed"},
                      {"subsection uniaxial\n  set packing = hexagonal\nend\n", "packing"},
                      {"subsection output\n  set polar bins = 35\nend\n", "polar bins"},
