@@ -6,6 +6,7 @@
 #include "continuum/driver/CaseMaterial.h"
 #include "continuum/driver/MaterialPointEngine.h"
 #include "continuum/fe/CubeEngine.h"
+#include "coupled/RveMaterialFactory.h"
 #include "coupled/case/RveSection.h"
 #include "common/AtomicFile.h"
 #include "common/Version.h"
@@ -112,12 +113,16 @@ continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::s
   continuum::CubeParameters p;
   p.side = box_size(c.specimen);
   p.cells_per_side = c.continuum.cells_per_edge;
+  for (std::size_t a = 0; a < c.continuum.box_edges.size() && a < 3; ++a)
+    p.box_edges[a] = c.continuum.box_edges[a];
+  for (std::size_t a = 0; a < c.continuum.box_cells.size() && a < 3; ++a)
+    p.box_cells[a] = static_cast<unsigned>(c.continuum.box_cells[a]);
   p.degree = c.continuum.degree;
   p.initial_stress = -c.specimen.isotropic_pressure; // tension positive
   p.imperfection_radius = c.continuum.imperfection_radius;
   p.imperfection_cohesion_factor = c.continuum.imperfection_factor;
   for (int a = 0; a < 3; ++a)
-    p.imperfection_centre[a] = c.continuum.imperfection_centre[a] * p.side;
+    p.imperfection_centre[a] = c.continuum.imperfection_centre[a] * p.edges()[a];
   p.regularization = c.continuum.regularization;
   p.volumetric_integration = c.continuum.volumetric_integration;
   p.kinematics = continuum::parse_kinematics(c.continuum.kinematics);
@@ -143,7 +148,7 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
     log::info("fem-dem: preparing the RVE of every quadrature point (" + std::to_string(c.rve.particles) +
               " spheres)");
     return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir, "fem-dem-fields"),
-                                                   continuum::fixed_material(coupled::make_rve_material(c, c.rve)),
+                                                   std::make_shared<coupled::RveMaterialFactory>(coupled::make_rve_material(c, c.rve)),
                                                    communicator);
   }
   if (name == "continuum")

@@ -72,7 +72,7 @@ void add_state_maps(compare::ReportInput &in, const CaseDescription &c, const fs
   std::optional<compare::SectionSeries> dem, fe;
   if (runs("dem"))
     dem = read_dem_section(dir);
-  if (runs("continuum")) {
+  if (runs("continuum") && c.continuum.box_edges.empty()) { // a box is not the DEM's cube: no side-by-side maps
     const continuum::CubeParameters cube = cube_parameters(c, dir.string());
     fe = read_cube_section(dir, cube.side, cube.cells_per_side);
   }

@@ -71,6 +71,8 @@ struct ContinuumParameters {
   HardeningTable dilatancy_angle;       ///< [deg]
   std::string kinematics = "finite strain";    ///< finite strain | small strain
   unsigned int cells_per_edge = 4;
+  std::vector<double> box_edges;        ///< [m] L_x, L_y, L_z of a box; empty = the specimen's cube
+  std::vector<double> box_cells;        ///< n_x, n_y, n_z (integers) of the box; empty = cells per edge
   unsigned int degree = 1;
   std::string volumetric_integration = "full"; ///< full | b-bar
   double imperfection_radius = 0.0;     ///< [m]; 0 = none
@@ -99,6 +101,8 @@ struct ContinuumParameters {
     v("dilatancy angle", p.dilatancy_angle.points);
     v("kinematics", p.kinematics);
     v("cells per edge", p.cells_per_edge);
+    v("box edges", p.box_edges);
+    v("box cells", p.box_cells);
     v("degree", p.degree);
     v("volumetric integration", p.volumetric_integration);
     v("imperfection radius", p.imperfection_radius);

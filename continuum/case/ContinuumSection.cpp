@@ -40,6 +40,12 @@ void declare_continuum(dealii::ParameterHandler &prm)
                     "(material point) or total Lagrangian (FE cube), Cauchy stress as force over current area; "
                     "small strain: eps = sym grad u, force over initial area (for comparison). Both engines.");
   prm.declare_entry("cells per edge", "4", Integer(1, 512), "Hexahedra per cube edge.");
+  prm.declare_entry("box edges", "", List(Double(0), 0, 3),
+                    "Edges L_x, L_y, L_z [m] of a box meshed instead of the specimen's cube (a biaxial specimen, "
+                    "a plane-strain slab: y kinematic at zero strain); empty: the cube of edge L0. Walls, box strains "
+                    "and wall stresses are the box's; the DEM engines keep their cube.");
+  prm.declare_entry("box cells", "", List(Integer(1, 512), 0, 3),
+                    "Hexahedra along x, y, z of the box ('box edges'); empty: 'cells per edge' on every axis.");
   prm.declare_entry("degree", "1", Integer(1, 4), "Polynomial degree of the FE_Q displacement.");
   prm.declare_entry("volumetric integration", "full", Selection("full|b-bar"),
                     "full: every quadrature point takes its own volumetric strain; b-bar: the cell average "
@@ -51,7 +57,7 @@ void declare_continuum(dealii::ParameterHandler &prm)
                     "Cohesion multiplier inside the weaker zone (drucker-prager: of Y(kappa); nikolaevsky: of every "
                     "strength, sigma_y and sigma_c, hence of Y(kappa)).");
   prm.declare_entry("imperfection centre", "0.5, 0.5, 0.5", List(Double(0, 1), 3, 3),
-                    "Centre of the weaker zone, as fractions of L0.");
+                    "Centre of the weaker zone, as fractions of the edges (L0, or the box's).");
   prm.declare_entry("linear solver", "gmres", Selection("gmres|cg|direct"),
                     "PETSc solver of the Newton systems (direct = MUMPS).");
   prm.declare_entry("preconditioner", "amg", Selection("amg|jacobi"),
@@ -93,6 +99,12 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
   ContinuumParameters::visit(p, ReadEntries{prm, r, "continuum"});
   p.nikolaevsky = parse_nikolaevsky(prm, r);
   prm.leave_subsection();
+  if (!p.box_edges.empty() && p.box_edges.size() != 3)
+    r.fail("continuum/box edges", "three edges L_x, L_y, L_z > 0 [m], or none (the cube)");
+  if (!p.box_edges.empty() && !(*std::min_element(p.box_edges.begin(), p.box_edges.end()) > 0.0))
+    r.fail("continuum/box edges", "edges > 0 [m]");
+  if (!p.box_cells.empty() && p.box_cells.size() != 3)
+    r.fail("continuum/box cells", "three counts n_x, n_y, n_z >= 1, or none (cells per edge on every axis)");
   if (p.volumetric_integration == "b-bar" && p.kinematics == "finite strain")
     r.fail("continuum/volumetric integration", "b-bar is a small-strain method: set kinematics = small strain");
   for (const auto &[k, c] : p.cohesion.points)

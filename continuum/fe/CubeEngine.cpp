@@ -72,6 +72,10 @@ void check_parameters(const CubeParameters &p)
     fail("side", "must be > 0");
   if (p.cells_per_side < 1)
     fail("cells per side", "must be >= 1");
+  if (!p.box_edges.isZero() && !(p.box_edges.minCoeff() > 0.0))
+    fail("box edges", "must all be > 0 (or all 0: the cube)");
+  if (p.box_cells[0] != 0 && (p.box_cells[0] < 1 || p.box_cells[1] < 1 || p.box_cells[2] < 1))
+    fail("box cells", "must all be >= 1 (or all 0: cells per side on every axis)");
   if (p.degree < 1 || p.degree > 3)
     fail("degree", "must be 1, 2 or 3");
   if (p.linear_solver != "gmres" && p.linear_solver != "cg" && p.linear_solver != "direct")
@@ -139,21 +143,27 @@ CubeEngine::Impl::Impl(const CubeParameters &p, std::shared_ptr<const MaterialFa
   setup_quadrature_data();
 }
 
-// The cube is meshed as reps^3 coarse cells refined k times with n = reps 2^k, so
-// p4est has few trees and the refinement is uniform; colorize gives the walls the
-// boundary ids 0..5 = x=0, x=L, y=0, y=L, z=0, z=L.
+// The box is meshed as reps_x x reps_y x reps_z coarse cells refined k times with
+// n_a = reps_a 2^k, so p4est has few trees and the refinement is uniform; colorize gives
+// the walls the boundary ids 0..5 = x=0, x=L_x, y=0, y=L_y, z=0, z=L_z.
 void CubeEngine::Impl::make_mesh_and_dofs()
 {
-  unsigned reps = prm.cells_per_side, levels = 0;
-  while (reps % 2 == 0 && reps > 2) {
-    reps /= 2;
+  std::array<unsigned, 3> reps = prm.cells();
+  unsigned levels = 0;
+  const auto halvable = [&reps] {
+    return std::all_of(reps.begin(), reps.end(), [](unsigned n) { return n % 2 == 0 && n > 2; });
+  };
+  while (halvable()) {
+    for (unsigned &n : reps)
+      n /= 2;
     ++levels;
   }
-  const double L = prm.side;
-  GridGenerator::subdivided_hyper_rectangle(tria, {reps, reps, reps}, Point<3>(0, 0, 0), Point<3>(L, L, L),
-                                            /*colorize=*/true);
+  const Vector3 L = prm.edges();
+  GridGenerator::subdivided_hyper_rectangle(tria, {reps[0], reps[1], reps[2]}, Point<3>(0, 0, 0),
+                                            Point<3>(L[0], L[1], L[2]), /*colorize=*/true);
   tria.refine_global(levels);
-  h_e = L / prm.cells_per_side;
+  const std::array<unsigned, 3> n = prm.cells();
+  h_e = std::cbrt(L.prod() / (double(n[0]) * n[1] * n[2])); // the cube root of the cell volume
 
   dof_handler.distribute_dofs(fe);
   owned = dof_handler.locally_owned_dofs();
@@ -225,8 +235,8 @@ std::vector<double> rigid_body_modes(const DoFHandler<3> &dof_handler, const Ind
 
 void CubeEngine::Impl::make_rigid_body_modes()
 {
-  const double c = 0.5 * prm.side;
-  rigid_body_modes = continuum::rigid_body_modes(dof_handler, owned, Point<3>(c, c, c));
+  const Vector3 c = 0.5 * prm.edges();
+  rigid_body_modes = continuum::rigid_body_modes(dof_handler, owned, Point<3>(c[0], c[1], c[2]));
 }
 
 // Every locally owned quadrature point gets its history, its position and its material:
@@ -236,7 +246,7 @@ void CubeEngine::Impl::setup_quadrature_data()
 {
   MaterialVariant base, weak;
   if (prm.regularization == "crack-band") {
-    const double l_ref = prm.band_reference_width > 0.0 ? prm.band_reference_width : prm.side;
+    const double l_ref = prm.band_reference_width > 0.0 ? prm.band_reference_width : std::cbrt(prm.edges().prod());
     base.softening_scale = l_ref / h_e;
   }
   weak = base;
@@ -552,7 +562,6 @@ double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
   internal_force = 0.0;
   double external_norm2 = 0.0;
   bool failed = false;
-  const double L = prm.side;
 
   for (const auto &cell : dof_handler.active_cell_iterators()) {
     if (!cell->is_locally_owned())
@@ -578,7 +587,7 @@ double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
   const double f_int = internal_force.l2_norm();
   const double f_ext = std::sqrt(Utilities::MPI::sum(external_norm2, comm));
   // Floor: the force of a stress of 1e-6 of the elastic modulus on one cell face.
-  const double floor = 1e-6 * elastic_tangent(0, 0) * (L / prm.cells_per_side) * (L / prm.cells_per_side);
+  const double floor = 1e-6 * elastic_tangent(0, 0) * h_e * h_e;
   residual_scale = std::max({f_int, f_ext, floor});
   stats.assembly_seconds += timer.wall_time();
   if (Utilities::MPI::max(failed ? 1 : 0, comm) != 0)
@@ -595,10 +604,10 @@ double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
 // Converged when |R_free| <= newton_tolerance * max(|F_int|, |F_ext|).
 bool CubeEngine::Impl::solve_step(double t)
 {
-  const double L = prm.side;
+  const Vector3 L = prm.edges();
   std::array<double, 3> wall{};
   for (unsigned a = 0; a < 3; ++a)
-    wall[a] = control.kinematic(a) ? control.strain(a, t) * L : 0.0;
+    wall[a] = control.kinematic(a) ? control.strain(a, t) * L[a] : 0.0;
 
   predictor_constraints.clear();
   predictor_constraints.reinit(relevant);
@@ -798,7 +807,8 @@ Vector3 CubeEngine::Impl::wall_stresses() const
     force[a] = Utilities::MPI::sum(force[a], comm);
   if (prm.kinematics == Kinematics::finite_strain)
     return force.cwiseQuotient(face_areas());
-  return force / (prm.side * prm.side);
+  const Vector3 L = prm.edges();
+  return force.cwiseQuotient(Vector3(L[1] * L[2], L[0] * L[2], L[0] * L[1]));
 }
 
 // A_a = int_{Gamma0_a} cof(F)_aa dA0 over the face x_a = L (Nanson's formula, projected on e_a).
@@ -834,8 +844,7 @@ Vector3 CubeEngine::Impl::face_strains() const
   });
   for (unsigned a = 0; a < 3; ++a)
     integral[a] = Utilities::MPI::sum(integral[a], comm);
-  const double L = prm.side;
-  return integral / (L * L * L);
+  return integral / prm.edges().prod(); // (mean u_a over the face of area V / L_a) / L_a
 }
 
 // Volume average of the Cauchy stress over the current configuration (dv = J dV0).
@@ -1013,7 +1022,7 @@ ResponseSample CubeEngine::measure()
               double(m.interval_steps),
               double(m.interval_cutbacks),
               double(m.interval_relaxed),
-              plastic_volume / std::pow(m.prm.side, 3),
+              plastic_volume / m.prm.edges().prod(),
               kappa_max,
               m.q_min,
               m.onset_time,

@@ -1,10 +1,11 @@
 #pragma once
 // CubeEngine: the loading program played on a finite element cube (deal.II).
 //
-// The specimen is the cube [0, L]^3 between six rigid, frictionless walls, exactly the
+// The specimen is the cube [0, L]^3 (or a box [0, L_x] x [0, L_y] x [0, L_z]: a biaxial
+// specimen, a plane-strain slab) between six rigid, frictionless walls, exactly the
 // DEM box: the walls x = 0, y = 0, z = 0 stay where they are (zero normal displacement,
 // tangential sliding free) and the walls x = L, y = L, z = L follow the StageControl:
-//   - kinematic axis a:  u_a = eps_a(t) L on the face x_a = L  (a frictionless platen;
+//   - kinematic axis a:  u_a = eps_a(t) L_a on the face x_a = L_a  (a frictionless platen;
 //                        S0 eq. (3) included, it is just a prescribed eps_a(t)),
 //   - stress axis a:     traction t = sigma*_a(t) e_a on the face x_a = L (a flexible
 //                        membrane, as a servo wall in the limit of fast servo).
@@ -53,6 +54,7 @@
 
 #include <mpi.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -60,9 +62,21 @@ namespace geocomp::continuum {
 
 /// Parameters of the FE cube (the lead declares them in the case file).
 struct CubeParameters {
-  // Geometry and discretization.
+  // Geometry and discretization: the cube [0, L]^3 in n^3 hexahedra, or a box.
   double side = 1.0;              ///< L [m] > 0
   unsigned cells_per_side = 8;    ///< n >= 1: n^3 hexahedra
+  /// A box [0, L_x] x [0, L_y] x [0, L_z] instead of the cube (a plane-strain slab, a
+  /// biaxial specimen): edges [m], all > 0; zero = the cube of `side`.
+  Vector3 box_edges = Vector3::Zero();
+  /// Hexahedra along x, y, z (each >= 1); zero = `cells_per_side` on every axis.
+  std::array<unsigned, 3> box_cells{{0, 0, 0}};
+
+  /// The edges and subdivisions in use (the box when given, else the cube).
+  Vector3 edges() const { return box_edges.isZero() ? Vector3::Constant(side) : box_edges; }
+  std::array<unsigned, 3> cells() const
+  {
+    return box_cells[0] == 0 ? std::array<unsigned, 3>{{cells_per_side, cells_per_side, cells_per_side}} : box_cells;
+  }
   unsigned degree = 1;            ///< FE_Q degree, 1..3
   /// full | b-bar. b-bar (Hughes 1980) replaces the volumetric strain at every quadrature
   /// point by its cell average, which removes the volumetric locking of Q1 under nearly

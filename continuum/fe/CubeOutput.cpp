@@ -89,7 +89,7 @@ void CubeEngine::Impl::write_output(double t)
 MidPlaneSample CubeEngine::mid_plane() const
 {
   const Impl &m = *impl_;
-  const double y_mid = 0.5 * m.prm.side;
+  const double y_mid = 0.5 * m.prm.edges()[1];
   MidPlaneSample local;
   const FEValuesExtractors::Vector displacement(0);
   for (const auto &cell : m.dof_handler.active_cell_iterators()) {

@@ -253,6 +253,41 @@ TEST(CubeEngine, HomogeneousPlasticCubeEqualsMaterialPointAndPeak)
   }
 }
 
+// A box of unequal edges and cells (the biaxial specimen's mesh: continuum/box edges, box
+// cells): its walls, face areas and box strains are the box's, so a homogeneous plastic box
+// is the material point as the cube is.
+TEST(CubeEngine, AHomogeneousPlasticBoxOfUnequalEdgesAndCellsEqualsTheMaterialPoint)
+{
+  const MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(10));
+  for (const Kinematics kinematics : {Kinematics::finite_strain, Kinematics::small_strain}) {
+    CubeParameters cp = small_cube(1);
+    cp.kinematics = kinematics;
+    cp.box_edges = Vector3(0.5, 0.125, 1.0);
+    cp.box_cells = {{2, 1, 4}};
+    CubeEngine box(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
+    EXPECT_NEAR(box.element_size(), std::cbrt(0.25 * 0.125 * 0.25), 1e-15);
+    MaterialPointParameters mpp;
+    mpp.substeps_per_advance = 2;
+    mpp.kinematics = kinematics;
+    MaterialPointEngine point(std::make_shared<MohrCoulombModel>(m), mpp);
+    const LoadingProgram program = triaxial(0.01);
+    const Response rb = ProgramRunner(program, box).run();
+    const Response rp = ProgramRunner(program, point).run();
+    ASSERT_EQ(rb.samples.size(), rp.samples.size());
+    const auto lateral = [&](const ResponseSample &s) {
+      return kinematics == Kinematics::small_strain ? s.strain(0, 0) + s.strain(1, 1)
+                                                    : std::log1p(s.strain(0, 0)) + std::log1p(s.strain(1, 1));
+    };
+    for (std::size_t k = 0; k < rb.samples.size(); ++k) {
+      const ResponseSample &a = rb.samples[k], &b = rp.samples[k];
+      EXPECT_LT((a.stress - b.stress).norm(), 1e-7 * p) << to_string(kinematics) << " sample " << k;
+      EXPECT_NEAR(a.strain(2, 2), b.strain(2, 2), 1e-12) << to_string(kinematics) << " sample " << k;
+      EXPECT_NEAR(lateral(a), lateral(b), 1e-9) << to_string(kinematics) << " sample " << k;
+    }
+    EXPECT_LT(rb.samples.back().stress(2, 2), -2.0 * p); // loaded past yield
+  }
+}
+
 TEST(CubeEngine, NewtonConvergesQuadraticallyOnPlasticSteps)
 {
   // An imperfect cube: the plastic zone is not homogeneous, so the global tangent matters.

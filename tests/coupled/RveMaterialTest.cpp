@@ -2,6 +2,7 @@
 // cell (coupled/RveMaterial.h) against the same cell driven alone by the same strain history.
 #include "continuum/fe/CubeEngine.h"
 #include "coupled/RveMaterial.h"
+#include "coupled/RveMaterialFactory.h"
 #include "tests/dem_periodic/TestCells.h"
 
 #include <gtest/gtest.h>
@@ -342,4 +343,44 @@ TEST(RveMaterial, AStressedRveTurnedByAFiniteRotationCarriesItsStressRound)
   std::printf("rotated RVE: deviator %.4g p, largest |sigma_turned - R sigma_still R^T| / p = %.3g\n", deviator, worst);
   EXPECT_GT(deviator, 0.05); // a stress with a direction to turn
   EXPECT_LT(worst, 0.02);
+}
+
+// The imperfection of an FE mesh of RVEs: the same prepared cell with the grains' friction
+// times the factor, which carries less deviator under the same deformation.
+TEST(RveMaterialFactory, TheWeakVariantIsTheSameCellWithLowerGrainFrictionAndCarriesLessDeviator)
+{
+  RveParameters rp;
+  rp.steps_per_increment = 300;
+  const auto base = std::make_shared<const RveMaterial>(prepared_rve(), rp);
+  const RveMaterialFactory factory(base);
+  continuum::MaterialVariant weak_variant;
+  weak_variant.cohesion_factor = 0.5;
+  weak_variant.softening_scale = 3.0; // no meaning for a cell: ignored
+  const auto weak = std::dynamic_pointer_cast<const RveMaterial>(factory.make(weak_variant));
+  ASSERT_TRUE(weak);
+  EXPECT_EQ(factory.make(continuum::MaterialVariant{}), base);
+  EXPECT_EQ(weak->prepared().parameters().friction, 0.5 * base->prepared().parameters().friction);
+  EXPECT_EQ(weak->prepared().n_particles(), base->prepared().n_particles());
+  EXPECT_EQ(weak->prepared().cell().h(), base->prepared().cell().h());
+  EXPECT_EQ(weak->parameters().steps_per_increment, rp.steps_per_increment);
+  // 3 % isochoric compression in three increments: the deviator each carries at the end.
+  const auto deviator = [](const RveMaterial &m) {
+    continuum::FiniteStrainHistory h = continuum::initial_finite_strain_history(m, continuum::Matrix3::Zero());
+    continuum::FiniteStrainUpdate u;
+    for (int k = 1; k <= 3; ++k) {
+      continuum::Matrix3 F = continuum::Matrix3::Identity();
+      F(2, 2) = 1.0 - 0.01 * k;
+      F(0, 0) = F(1, 1) = 1.0 / std::sqrt(F(2, 2));
+      u = continuum::finite_strain_update(m, F, h);
+      h = u.history;
+    }
+    const continuum::Matrix3 s = u.cauchy_stress();
+    return s(0, 0) - s(2, 2);
+  };
+  const double q_base = deviator(*base), q_weak = deviator(*weak);
+  std::printf("deviator at 3 %% isochoric compression: mu %.2f -> %.4g p, mu %.2f -> %.4g p\n",
+              base->prepared().parameters().friction, q_base / pressure, weak->prepared().parameters().friction,
+              q_weak / pressure);
+  EXPECT_GT(q_base, 0.0);
+  EXPECT_LT(q_weak, 0.9 * q_base);
 }
