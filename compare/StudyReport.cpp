@@ -240,6 +240,15 @@ nlohmann::ordered_json number(double v) { return std::isfinite(v) ? nlohmann::or
 
 } // namespace
 
+std::vector<std::pair<std::string, double>> study_summary_entries(const StudySummary &s)
+{
+  std::vector<std::pair<std::string, double>> entries{{"peak_strain", s.metrics.peak_strain}};
+  const std::vector<double> values = summary_values(s);
+  for (std::size_t col = 0; col < values.size(); ++col)
+    entries.emplace_back(summary_columns[col].key, values[col]);
+  return entries;
+}
+
 std::string study_json(const StudyReportInput &in)
 {
   nlohmann::ordered_json j;
@@ -259,9 +268,8 @@ std::string study_json(const StudyReportInput &in)
       const StudySummary s = study_summary(r.response, c.kind, c.axial);
       nlohmann::ordered_json je;
       je["engine"] = r.engine;
-      je["peak_strain"] = number(s.metrics.peak_strain);
-      for (std::size_t col = 0; col < 6; ++col)
-        je[summary_columns[col].key] = number(summary_values(s)[col]);
+      for (const auto &[key, value] : study_summary_entries(s))
+        je[key] = number(value);
       je["elastic_limit_method"] = s.metrics.elastic_limit_method;
       if (!s.error.empty())
         je["error"] = s.error;

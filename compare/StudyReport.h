@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace geocomp::compare {
@@ -66,6 +67,11 @@ double relative_volume_change(double eps_v);
 
 /// The summary of one Response on the curve `kind`/`axial` (as the pair report reads it).
 StudySummary study_summary(const Response &response, CurveKind kind, const std::optional<AxialAxis> &axial);
+
+/// The summary's numbers under study.json's keys, in its order (SI; NaN where missing):
+/// peak_strain, peak_stress_Pa, secant_modulus_Pa, elastic_limit_stress_Pa,
+/// dilatancy_angle_deg, V_r_min, V_r_final.
+std::vector<std::pair<std::string, double>> study_summary_entries(const StudySummary &s);
 
 /// study.json's text.
 std::string study_json(const StudyReportInput &in);

@@ -2,6 +2,8 @@
 // The `geocomp` command line: one Command per subcommand, each with its own --help.
 // Exit codes: 0 success, 2 bad input (case file, specimen file, command line),
 // 1 the run itself failed.
+#include "EngineRun.h"
+
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -59,5 +61,8 @@ Command crush_command();
 Command shear_box_command();
 /// The command line, stored in every results file.
 void set_command_line(const std::string &line);
+/// The settings of a command-line run (RunCommands.cpp): the world's communicator, the
+/// command line, the terminal's progress display, checkpoints on SIGINT/SIGTERM.
+RunSettings command_run_settings(bool reuse, int liggghts_ranks = 1);
 
 } // namespace geocomp::cli

@@ -24,27 +24,13 @@ namespace geocomp::cli {
 namespace fs = std::filesystem;
 
 namespace {
-/// The communicator engines run on: the world for `continuum`/`pair`, one rank each in a sweep.
-MPI_Comm engine_comm = MPI_COMM_WORLD;
 std::string command_line;
-
-/// The settings of a command-line run: its communicator, the command line, the terminal's
-/// progress display, checkpoints on SIGINT/SIGTERM.
-RunSettings settings(bool reuse, int liggghts_ranks = 1)
-{
-  RunSettings s;
-  s.comm = engine_comm;
-  s.reuse = reuse;
-  s.command_line = command_line;
-  s.liggghts.ranks = liggghts_ranks;
-  return s;
-}
 
 /// `pair` on a case from the command line: its exit code (1 when an engine did not complete
 /// its program; the warning was printed with the run).
 int pair_exit_code(const CaseDescription &c, const fs::path &dir, bool reuse, int liggghts_ranks = 1)
 {
-  return pair_case(c, dir, settings(reuse, liggghts_ranks)).complete ? ok : run_failure;
+  return pair_case(c, dir, command_run_settings(reuse, liggghts_ranks)).complete ? ok : run_failure;
 }
 
 struct RunOptions {
@@ -90,23 +76,7 @@ RunOptions parse_run(const std::vector<std::string> &args, const std::vector<std
 std::unique_ptr<OutputFolderLock> lock_output(const RunOptions &o)
 {
   ensure_mpi();
-  return lock_for_run(o.dir, o.c.file, o.dir_given_as, engine_comm);
-}
-
-/// Runs `body`, mapping failures onto exit codes: bad input 2, run failure 1.
-int guarded(const std::function<int()> &body)
-{
-  try {
-    return body();
-  } catch (const CaseError &e) {
-    log::error(e.what());
-    return bad_input;
-  } catch (const UsageError &) {
-    throw;
-  } catch (const std::exception &e) {
-    log::error(std::string("run failed: ") + e.what());
-    return run_failure;
-  }
+  return lock_for_run(o.dir, o.c.file, o.dir_given_as, MPI_COMM_WORLD);
 }
 
 Command engine_command(const std::string &engine, const std::string &summary, const std::string &details)
@@ -124,7 +94,7 @@ Command engine_command(const std::string &engine, const std::string &summary, co
     RunOptions o = parse_run(args, {engine});
     return guarded([&] {
       const auto lock = lock_output(o);
-      const Response r = run_engine(engine, o.c, o.dir, settings(o.reuse, o.liggghts_ranks));
+      const Response r = run_engine(engine, o.c, o.dir, command_run_settings(o.reuse, o.liggghts_ranks));
       return static_cast<int>(completion_status(r, o.c.program) == "complete" ? ok : run_failure);
     });
   };
@@ -133,6 +103,15 @@ Command engine_command(const std::string &engine, const std::string &summary, co
 } // namespace
 
 void set_command_line(const std::string &line) { command_line = line; }
+
+RunSettings command_run_settings(bool reuse, int liggghts_ranks)
+{
+  RunSettings s;
+  s.reuse = reuse;
+  s.command_line = command_line;
+  s.liggghts.ranks = liggghts_ranks;
+  return s;
+}
 
 Command dem_command()
 {
@@ -220,32 +199,11 @@ Command sweep_command()
       return static_cast<int>(bad_input);
     }
     ensure_mpi();
-    const std::vector<int> codes = pair_over_ranks(cases, !a.has("force"), "sweep");
+    const std::vector<int> codes = pair_over_ranks(cases, command_run_settings(!a.has("force")), "sweep");
     return std::all_of(codes.begin(), codes.end(), [](int code) { return code == ok; }) ? static_cast<int>(ok)
                                                                                         : static_cast<int>(run_failure);
   };
   return c;
-}
-
-std::vector<int> pair_over_ranks(const std::vector<CaseDescription> &cases, bool reuse, const std::string &command)
-{
-  int world_rank = 0, world_size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &world_rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &world_size);
-  engine_comm = MPI_COMM_SELF;
-  std::vector<int> codes(cases.size(), ok);
-  for (std::size_t k = world_rank; k < cases.size(); k += world_size) {
-    codes[k] = guarded([&] {
-      const OutputFolderLock lock(cases[k].output.directory, cases[k].file, "output/directory");
-      return pair_exit_code(cases[k], cases[k].output.directory, reuse);
-    });
-    log::info(command + ": rank " + std::to_string(world_rank) + " case " + cases[k].file + ": " +
-              (codes[k] == ok ? "done" : "FAILED") + " -> " + cases[k].output.directory);
-  }
-  engine_comm = MPI_COMM_WORLD;
-  std::vector<int> all(cases.size(), ok);
-  MPI_Allreduce(codes.data(), all.data(), static_cast<int>(codes.size()), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  return all;
 }
 
 /// The results of the case's engines found in `dir` (nothing is run).

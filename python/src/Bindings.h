@@ -1,15 +1,19 @@
 #pragma once
 // The pieces of the `geocomp` Python module (docs/python.md), one file each: cases
 // (CaseBindings.cpp), runs (RunBindings.cpp), responses as numpy arrays
-// (ResponseBindings.cpp), metrics and the Rudnicki-Rice functions (MetricsBindings.cpp).
+// (ResponseBindings.cpp), metrics and the Rudnicki-Rice functions (MetricsBindings.cpp),
+// studies (StudyBindings.cpp).
 // Module.cpp calls each bind_*() once, in this order: later ones use the types and
 // exceptions the earlier ones register.
+#include "common/ProgramRunner.h"
 #include "common/Response.h"
+#include "compare/Metrics.h"
 #include "compare/case/CaseDescription.h"
 
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace geocomp::python {
@@ -30,6 +34,8 @@ public:
   static PyCase checked(const std::string &path);
   /// parse_case(text, name): `name` picks the syntax (.prm/.json) and names the case in messages.
   static PyCase parse(const std::string &text, const std::string &name);
+  /// A case already read and checked (a study's case).
+  static PyCase of(CaseDescription d) { return PyCase(std::move(d)); }
 
   const CaseDescription &description() const { return description_; }
   const std::string &file() const { return description_.file; }
@@ -73,9 +79,27 @@ struct PyResponse {
 /// Python writes it (the shortest text that reads back to the same double).
 std::string entry_text(const pybind11::handle &value);
 
+/// The compare layer's metrics as geocomp.metrics() returns them (a dict; NaN where missing).
+pybind11::dict metrics_dict(const compare::MetricSet &s);
+
+/// MPI (and PETSc) started once per process as the command line starts it, finished when
+/// Python exits (RunBindings.cpp).
+void ensure_mpi();
+
+/// A run's progress as the Python callbacks get it: stage, stage_count, branch, time [s],
+/// stage_fraction (RunBindings.cpp).
+pybind11::dict progress_dict(const RunProgress &p);
+
+/// Thrown from a progress callback to stop a run when Python raised; the Python exception
+/// itself is kept and raised again once the run has unwound (RunBindings.cpp).
+struct CallbackRaised : std::runtime_error {
+  CallbackRaised() : std::runtime_error("the Python progress callback raised") {}
+};
+
 void bind_case(pybind11::module_ &m);
 void bind_response(pybind11::module_ &m);
 void bind_run(pybind11::module_ &m);
 void bind_metrics(pybind11::module_ &m);
+void bind_study(pybind11::module_ &m);
 
 } // namespace geocomp::python

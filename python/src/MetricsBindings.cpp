@@ -15,7 +15,6 @@ namespace geocomp::python {
 
 namespace py = pybind11;
 
-namespace {
 py::dict metrics_dict(const compare::MetricSet &s)
 {
   py::dict d;
@@ -49,6 +48,7 @@ py::dict metrics_dict(const compare::MetricSet &s)
   return d;
 }
 
+namespace {
 py::dict onset_dict(const compare::OnsetEstimate &o)
 {
   return py::dict(py::arg("source") = o.source, py::arg("found") = o.found, py::arg("strain") = o.strain,

@@ -21,9 +21,6 @@ namespace geocomp::python {
 
 namespace py = pybind11;
 
-namespace {
-/// MPI (and PETSc) started once per process as the command line starts it (compare/cli/Mpi.h),
-/// and finished when Python exits.
 void ensure_mpi()
 {
   static bool started = false;
@@ -34,12 +31,7 @@ void ensure_mpi()
   started = true;
 }
 
-/// Thrown from the progress callback to stop the run when Python raised; the Python
-/// exception itself is kept and raised again once the run has unwound.
-struct CallbackRaised : std::runtime_error {
-  CallbackRaised() : std::runtime_error("the Python progress callback raised") {}
-};
-
+/// run()'s progress dict (its docstring lists the keys).
 py::dict progress_dict(const RunProgress &p)
 {
   py::dict d;
@@ -51,6 +43,7 @@ py::dict progress_dict(const RunProgress &p)
   return d;
 }
 
+namespace {
 /// Raises geocomp.RunError(message) with the samples recorded so far as its `response`.
 [[noreturn]] void raise_run_error(const py::object &type, const std::string &message, PyResponse partial)
 {
