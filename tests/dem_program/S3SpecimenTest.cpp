@@ -199,7 +199,9 @@ TEST(S3Specimen, AdhesionCarriesTensionAgainAfterTheCrackClosesWhereCohesionDoes
   // Restored: the re-contacted adhesive specimen is nearly as strong as at first.
   EXPECT_GT(adhesion.second, 0.7 * adhesion.first);
   // Not restored: the broken bonds across the crack stay broken; only bonds of first-time
-  // contacts hold the second pull.
+  // contacts hold the second pull (few here: this lattice-built packing closes its crack onto
+  // the old partners; the shipped 1 000-sphere cases bond many new pairs and recover 71 %,
+  // docs/s3-bonded.md).
   EXPECT_LT(cohesion.second, 0.5 * cohesion.first);
   EXPECT_GT(adhesion.second / adhesion.first, cohesion.second / cohesion.first + 0.3);
 }
