@@ -109,6 +109,7 @@ Outcome run(const std::string &name)
               name.c_str(), out.peak * 1e-3, out.late_mean * 1e-3, out.bonds0, out.broken_end);
   return out;
 }
+
 /// The tensile strength of each tension stage of a tension - re-contact - tension cycle.
 struct Cycle {
   double first = 0.0;   ///< [Pa] largest sigma_zz (tension positive) in stage 1
