@@ -113,6 +113,7 @@ continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::s
   continuum::CubeParameters p;
   p.side = box_size(c.specimen);
   p.cells_per_side = c.continuum.cells_per_edge;
+  p.threads = c.continuum.threads;
   for (std::size_t a = 0; a < c.continuum.box_edges.size() && a < 3; ++a)
     p.box_edges[a] = c.continuum.box_edges[a];
   for (std::size_t a = 0; a < c.continuum.box_cells.size() && a < 3; ++a)

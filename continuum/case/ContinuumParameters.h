@@ -71,6 +71,7 @@ struct ContinuumParameters {
   HardeningTable dilatancy_angle;       ///< [deg]
   std::string kinematics = "finite strain";    ///< finite strain | small strain
   unsigned int cells_per_edge = 4;
+  unsigned int threads = 1;             ///< threads over the points' updates (FE engines)
   std::vector<double> box_edges;        ///< [m] L_x, L_y, L_z of a box; empty = the specimen's cube
   std::vector<double> box_cells;        ///< n_x, n_y, n_z (integers) of the box; empty = cells per edge
   unsigned int degree = 1;
@@ -101,6 +102,7 @@ struct ContinuumParameters {
     v("dilatancy angle", p.dilatancy_angle.points);
     v("kinematics", p.kinematics);
     v("cells per edge", p.cells_per_edge);
+    v("threads", p.threads);
     v("box edges", p.box_edges);
     v("box cells", p.box_cells);
     v("degree", p.degree);

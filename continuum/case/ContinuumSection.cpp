@@ -40,6 +40,9 @@ void declare_continuum(dealii::ParameterHandler &prm)
                     "(material point) or total Lagrangian (FE cube), Cauchy stress as force over current area; "
                     "small strain: eps = sym grad u, force over initial area (for comparison). Both engines.");
   prm.declare_entry("cells per edge", "4", Integer(1, 512), "Hexahedra per cube edge.");
+  prm.declare_entry("threads", "1", Integer(1, 1024),
+                    "Threads over the quadrature points' material updates of the FE engines within a rank "
+                    "(fem-dem: one DEM cell per point); the same bits for any count.");
   prm.declare_entry("box edges", "", List(Double(0), 0, 3),
                     "Edges L_x, L_y, L_z [m] of a box meshed instead of the specimen's cube (a biaxial specimen, "
                     "a plane-strain slab: y kinematic at zero strain); empty: the cube of edge L0. Walls, box strains "

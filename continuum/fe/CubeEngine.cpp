@@ -50,6 +50,16 @@ Vector6 mandel(const SymmetricTensor<2, 3> &t)
   return v;
 }
 
+/// F = I + Grad u at a point.
+Matrix3 deformation_gradient(const Tensor<2, 3> &grad_u)
+{
+  Matrix3 F = Matrix3::Identity();
+  for (unsigned i = 0; i < 3; ++i)
+    for (unsigned j = 0; j < 3; ++j)
+      F(i, j) += grad_u[i][j];
+  return F;
+}
+
 /// The trial record of a finite-strain point (QuadraturePointData): Cauchy stress, the
 /// logarithmic tangent, region, kappa and the history to commit.
 void record_finite(QuadraturePointData &d, const FiniteStrainUpdate &f)
@@ -91,6 +101,8 @@ void check_parameters(const CubeParameters &p)
     fail("newton tolerance", "must be in (0, 1)");
   if (!(p.newton_stagnation_factor >= 0.0 && p.newton_stagnation_factor * p.newton_tolerance < 1.0))
     fail("newton stagnation factor", "must be >= 0, with factor * newton tolerance < 1");
+  if (p.threads < 1 || p.threads > 1024)
+    fail("threads", "must be in 1..1024");
   if (p.max_newton_iterations < 1 || p.steps_per_advance < 1)
     fail("max newton iterations / steps per advance", "must be >= 1");
   if (!(p.imperfection_radius >= 0.0))
@@ -385,15 +397,13 @@ struct CubeEngine::Impl::CellTerms {
 // unchanged; for Q1 the volumetric constraints drop from 8 to 1 per cell, so nearly
 // isochoric plastic flow no longer locks. K_ij = int b_bar_i . C b_bar_j stays the exact
 // derivative of the B-bar residual.
-bool CubeEngine::Impl::cell_small_strain(CellTerms &c)
+void CubeEngine::Impl::small_strains(CellTerms &c) const
 {
   const FEValuesExtractors::Vector displacement(0);
   FEValues<3> &fv = c.fe_values;
   const unsigned dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
-  const bool bbar = prm.volumetric_integration == "b-bar";
-  const Vector6 m = mandel_identity();
   fv[displacement].get_function_symmetric_gradients(solution, c.strains);
-  if (bbar) {
+  if (prm.volumetric_integration == "b-bar") {
     double volume = 0.0, mean_trace = 0.0;
     std::fill(c.mean_div.begin(), c.mean_div.end(), 0.0);
     for (unsigned q = 0; q < n_q; ++q) {
@@ -409,12 +419,22 @@ bool CubeEngine::Impl::cell_small_strain(CellTerms &c)
     for (unsigned q = 0; q < n_q; ++q)
       c.strains[q] += ((mean_trace - trace(c.strains[q])) / 3.0) * unit_symmetric_tensor<3>();
   }
+}
+
+bool CubeEngine::Impl::cell_small_strain(CellTerms &c)
+{
+  const FEValuesExtractors::Vector displacement(0);
+  FEValues<3> &fv = c.fe_values;
+  const unsigned dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
+  const bool bbar = prm.volumetric_integration == "b-bar";
+  const Vector6 m = mandel_identity();
+  small_strains(c);
   const auto data = qp_data.get_data(Cell(c.cell));
   bool ok = true;
   for (unsigned q = 0; q < n_q; ++q) {
     QuadraturePointData &d = *data[q];
     try {
-      d.trial = d.material->update(mandel(c.strains[q]) + prestrain, d.old_history);
+      d.trial = small_update(d, mandel(c.strains[q]) + prestrain);
     } catch (const ReturnMapFailure &) {
       ok = false; // every rank still finishes the pass (collective compress in assemble)
       d.trial.stress = d.old_stress;
@@ -460,14 +480,11 @@ bool CubeEngine::Impl::cell_finite_strain(CellTerms &c)
   auto &w = c.w;
   for (unsigned q = 0; q < n_q; ++q) {
     QuadraturePointData &d = *data[q];
-    Matrix3 F = Matrix3::Identity();
-    for (unsigned i = 0; i < 3; ++i)
-      for (unsigned j = 0; j < 3; ++j)
-        F(i, j) += c.gradients[q][i][j];
+    Matrix3 F = deformation_gradient(c.gradients[q]);
     Matrix3 tau;
     Matrix9 T;
     try {
-      const FiniteStrainUpdate f = finite_strain_update(*d.material, F, d.old_finite);
+      const FiniteStrainUpdate f = finite_update(d, F);
       record_finite(d, f);
       tau = f.kirchhoff_stress;
       T = f.region == ReturnRegion::apex ? Matrix9(f.spatial_tangent + prm.apex_tangent_fraction * elastic_tangent_9)
@@ -552,9 +569,85 @@ void CubeEngine::Impl::cell_tractions(CellTerms &c, double t)
   }
 }
 
+// @sect4{Threads over the points}
+//
+// With threads > 1 each assembly pass first computes every locally owned point's input (its
+// strain, or F, exactly as the pass will: the same FEValues calls) and then its material
+// update on `threads` OpenMP threads, one point per task (an RVE per point costs 10^5 to 10^7
+// times a return map, and the points' costs differ: dynamic schedule). The results wait in
+// QuadraturePointData::Ahead; the pass takes a point's result when its input is the same
+// doubles and computes it otherwise. Updates are pure functions of (input, committed history),
+// and the pass sums in cell order as before: the same bits for any thread count.
+void CubeEngine::Impl::update_points_ahead()
+{
+  ++assembly_pass;
+  if (prm.threads <= 1)
+    return;
+  const bool finite = prm.kinematics == Kinematics::finite_strain;
+  CellTerms terms(*this, false);
+  std::vector<QuadraturePointData *> points;
+  for (const auto &cell : dof_handler.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    terms.reinit(cell);
+    if (finite)
+      terms.fe_values[FEValuesExtractors::Vector(0)].get_function_gradients(solution, terms.gradients);
+    else
+      small_strains(terms);
+    const auto data = qp_data.get_data(Cell(cell));
+    for (unsigned q = 0; q < data.size(); ++q) {
+      QuadraturePointData &d = *data[q];
+      if (finite)
+        d.ahead.deformation_gradient = deformation_gradient(terms.gradients[q]);
+      else
+        d.ahead.strain = mandel(terms.strains[q]) + prestrain;
+      points.push_back(&d);
+    }
+  }
+  std::vector<std::string> errors(points.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(prm.threads)
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    QuadraturePointData &d = *points[k];
+    d.ahead.failed = false;
+    try {
+      if (finite)
+        d.ahead.finite = finite_strain_update(*d.material, d.ahead.deformation_gradient, d.old_finite);
+      else
+        d.ahead.small = d.material->update(d.ahead.strain, d.old_history);
+    } catch (const ReturnMapFailure &) {
+      d.ahead.failed = true;
+    } catch (const std::exception &e) {
+      errors[k] = e.what(); // no exception leaves an OpenMP region
+    }
+    d.ahead.pass = assembly_pass;
+  }
+  for (const std::string &e : errors)
+    if (!e.empty())
+      throw std::runtime_error(e);
+}
+
+MaterialPointUpdate CubeEngine::Impl::small_update(QuadraturePointData &d, const Vector6 &strain) const
+{
+  if (d.ahead.pass != assembly_pass || d.ahead.strain != strain)
+    return d.material->update(strain, d.old_history);
+  if (d.ahead.failed)
+    throw ReturnMapFailure("the point's update computed ahead failed");
+  return d.ahead.small;
+}
+
+FiniteStrainUpdate CubeEngine::Impl::finite_update(QuadraturePointData &d, const Matrix3 &F) const
+{
+  if (d.ahead.pass != assembly_pass || d.ahead.deformation_gradient != F)
+    return finite_strain_update(*d.material, F, d.old_finite);
+  if (d.ahead.failed)
+    throw ReturnMapFailure("the point's update computed ahead failed");
+  return d.ahead.finite;
+}
+
 double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
 {
   Timer timer;
+  update_points_ahead();
   CellTerms terms(*this, with_matrix);
   if (with_matrix)
     matrix = 0.0;

@@ -109,6 +109,10 @@ struct CubeParameters {
   unsigned steps_per_advance = 2;   ///< load steps per sample interval (initial size)
   unsigned max_cutbacks = 10;       ///< halvings of a load step before giving up
   double initial_stress = 0.0;      ///< isotropic initial stress [Pa], tension positive
+  /// Threads over the quadrature points' material updates in each assembly pass (within a
+  /// rank; FEM x DEM: one RVE per point). Each update is independent and the assembly sums
+  /// in cell order, so the results are the same bits for any count; 1 = serial.
+  unsigned threads = 1;
   // Imperfection: quadrature points inside the sphere get a reduced cohesion.
   Vector3 imperfection_centre = Vector3(0.5, 0.5, 0.5); ///< [m]
   double imperfection_radius = 0.0; ///< [m] >= 0; 0 = no imperfection

@@ -62,6 +62,17 @@ struct QuadraturePointData {
   // Localization indicator at the last committed state.
   double q = 1.0;
   Vector3 normal = Vector3::Zero();
+  /// The update of the current assembly pass computed ahead, in parallel over the points
+  /// (CubeParameters::threads > 1; CubeEngine.cpp, update_points_ahead): valid for the pass
+  /// numbered `pass` and the input it was computed from, bit for bit.
+  struct Ahead {
+    unsigned long pass = 0; ///< 0: never
+    bool failed = false;    ///< the update threw ReturnMapFailure
+    Vector6 strain = Vector6::Zero();
+    Matrix3 deformation_gradient = Matrix3::Identity();
+    MaterialPointUpdate small;
+    FiniteStrainUpdate finite;
+  } ahead;
 };
 
 struct CubeEngine::Impl {
@@ -86,6 +97,15 @@ struct CubeEngine::Impl {
   /// (with B-bar) or finite strain (total Lagrangian); false when a return map failed.
   struct CellTerms;
   bool cell_small_strain(CellTerms &terms);
+  /// The strains of a cell's points at `solution` into terms.strains (B-bar: with the cell's
+  /// mean volumetric strain, and terms.mean_div the mean divergences).
+  void small_strains(CellTerms &terms) const;
+  /// The points' updates of the coming pass, computed in parallel over the points
+  /// (threads > 1); then small_update / finite_update find them.
+  void update_points_ahead();
+  MaterialPointUpdate small_update(QuadraturePointData &d, const Vector6 &strain) const;
+  FiniteStrainUpdate finite_update(QuadraturePointData &d, const Matrix3 &F) const;
+  unsigned long assembly_pass = 0; ///< numbers the assembly passes (QuadraturePointData::Ahead)
   bool cell_finite_strain(CellTerms &terms);
   /// Wall tractions sigma*_a e_a on the faces x_a = L of stress axes, per current projected
   /// area at finite strain (with the load stiffness when the matrix is assembled).

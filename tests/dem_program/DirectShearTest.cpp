@@ -200,19 +200,3 @@ TEST(DirectShear, OverThreeSeedsPeakMuBRisesWithTheContactFriction)
     EXPECT_GT(hi.peak_mu_b, lo.peak_mu_b);
   }
 }
-
-// S4 Fig. 7(b) at S4's highest normal stress: the effective friction rises with the contact
-// friction at 300 kPa too (S4 draws the rise at 100, 200 and 300 kPa), the same specimens as
-// above (seeds 7, 8, 9) sheared with contact friction 0.3 and 1.0; margins printed.
-TEST(DirectShear, OverThreeSeedsPeakMuBRisesWithTheContactFrictionAt300kPaToo)
-{
-  for (std::uint64_t seed : trend_seeds) {
-    SCOPED_TRACE("seed " + std::to_string(seed));
-    const ShearSummary lo = shear_run(seed, 300e3, 0.3), hi = shear_run(seed, 300e3, 1.0);
-    std::printf("[S4 friction at 300 kPa, seed %llu] peak mu_b at contact mu 1.0 - 0.3: %+.3f (%.3f / %.3f)\n",
-                (unsigned long long)seed, hi.peak_mu_b - lo.peak_mu_b, hi.peak_mu_b, lo.peak_mu_b);
-    EXPECT_DOUBLE_EQ(lo.void_ratio_seated, hi.void_ratio_seated);
-    EXPECT_LT(hi.inertial_number, 1e-3);
-    EXPECT_GT(hi.peak_mu_b, lo.peak_mu_b);
-  }
-}
