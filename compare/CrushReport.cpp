@@ -4,6 +4,7 @@
 #include "common/Subprocess.h"
 #include "compare/GnuplotString.h"
 #include "compare/HtmlString.h"
+#include "compare/RunFiles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,19 +20,8 @@ namespace geocomp::compare {
 
 namespace {
 
-std::string fmt(double v, const char* f = "%.4g")
-{
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
-void write_text(const fs::path& p, const std::string& text)
-{
-  std::ofstream out(p);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + p.string());
-}
+std::string fmt(double v, const char* f = "%.4g") { return format_number(v, f); }
+void write_text(const fs::path& p, const std::string& text) { write_text_file(p, text); }
 
 const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf", "#7f7f7f"};
 

@@ -1,5 +1,7 @@
 #include "compare/CrushRuns.h"
 
+#include "compare/RunFiles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -14,18 +16,7 @@ namespace {
 
 const std::string summary_suffix = "_summary.tsv";
 
-std::map<std::string, std::string> read_summary(const fs::path& path)
-{
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot read the run summary");
-  std::map<std::string, std::string> kv;
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto tab = line.find('\t');
-    if (tab != std::string::npos) kv[line.substr(0, tab)] = line.substr(tab + 1);
-  }
-  return kv;
-}
+std::map<std::string, std::string> read_summary(const fs::path& path) { return read_run_summary(path); }
 
 /// A table with a header line of tab-separated names and numeric rows; empty when the
 /// file is missing and not `required`.

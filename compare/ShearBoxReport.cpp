@@ -4,7 +4,7 @@
 #include "common/Subprocess.h"
 #include "compare/GnuplotString.h"
 #include "compare/HtmlString.h"
-
+#include "compare/RunFiles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,19 +22,8 @@ namespace geocomp::compare {
 namespace {
 
 
-std::string fmt(double v, const char* f = "%.4g")
-{
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
-void write_text(const fs::path& p, const std::string& text)
-{
-  std::ofstream out(p);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + p.string());
-}
+std::string fmt(double v, const char* f = "%.4g") { return format_number(v, f); }
+void write_text(const fs::path& p, const std::string& text) { write_text_file(p, text); }
 
 std::string box_label(double L) { return L > 0.0 ? "L = " + fmt(100.0 * L, "%.3g") + " cm" : "L = ?"; }
 

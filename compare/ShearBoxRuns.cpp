@@ -1,5 +1,7 @@
 #include "compare/ShearBoxRuns.h"
 
+#include "compare/RunFiles.h"
+
 #include <algorithm>
 #include <fstream>
 #include <map>
@@ -19,18 +21,7 @@ fs::path summary_of(const fs::path& tsv)
   return tsv.parent_path() / (tsv.stem().string() + summary_suffix);
 }
 
-std::map<std::string, std::string> read_summary(const fs::path& path)
-{
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot read the run summary");
-  std::map<std::string, std::string> kv;
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto tab = line.find('\t');
-    if (tab != std::string::npos) kv[line.substr(0, tab)] = line.substr(tab + 1);
-  }
-  return kv;
-}
+std::map<std::string, std::string> read_summary(const fs::path& path) { return read_run_summary(path); }
 
 double number(const std::map<std::string, std::string>& kv, const std::string& key, const fs::path& file,
               bool required = true)
