@@ -148,8 +148,8 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
   if (name == "fem-dem") { // FEM x DEM: the continuum section's cube, an RVE per point (docs/coupled.md)
     log::info("fem-dem: preparing the RVE of every quadrature point (" + std::to_string(c.rve.particles) +
               " spheres)");
-    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir, "fem-dem-fields"),
-                                                   std::make_shared<coupled::RveMaterialFactory>(coupled::make_rve_material(c, c.rve)),
+    auto rves = std::make_shared<coupled::RveMaterialFactory>(coupled::make_rve_material(c, c.rve));
+    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir, "fem-dem-fields"), std::move(rves),
                                                    communicator);
   }
   if (name == "continuum")

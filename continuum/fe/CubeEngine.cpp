@@ -626,7 +626,7 @@ void CubeEngine::Impl::update_points_ahead()
       throw std::runtime_error(e);
 }
 
-MaterialPointUpdate CubeEngine::Impl::small_update(QuadraturePointData &d, const Vector6 &strain) const
+MaterialPointUpdate CubeEngine::Impl::small_update(const QuadraturePointData &d, const Vector6 &strain) const
 {
   if (d.ahead.pass != assembly_pass || d.ahead.strain != strain)
     return d.material->update(strain, d.old_history);
@@ -635,7 +635,7 @@ MaterialPointUpdate CubeEngine::Impl::small_update(QuadraturePointData &d, const
   return d.ahead.small;
 }
 
-FiniteStrainUpdate CubeEngine::Impl::finite_update(QuadraturePointData &d, const Matrix3 &F) const
+FiniteStrainUpdate CubeEngine::Impl::finite_update(const QuadraturePointData &d, const Matrix3 &F) const
 {
   if (d.ahead.pass != assembly_pass || d.ahead.deformation_gradient != F)
     return finite_strain_update(*d.material, F, d.old_finite);

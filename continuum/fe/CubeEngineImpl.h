@@ -103,8 +103,8 @@ struct CubeEngine::Impl {
   /// The points' updates of the coming pass, computed in parallel over the points
   /// (threads > 1); then small_update / finite_update find them.
   void update_points_ahead();
-  MaterialPointUpdate small_update(QuadraturePointData &d, const Vector6 &strain) const;
-  FiniteStrainUpdate finite_update(QuadraturePointData &d, const Matrix3 &F) const;
+  MaterialPointUpdate small_update(const QuadraturePointData &d, const Vector6 &strain) const;
+  FiniteStrainUpdate finite_update(const QuadraturePointData &d, const Matrix3 &F) const;
   unsigned long assembly_pass = 0; ///< numbers the assembly passes (QuadraturePointData::Ahead)
   bool cell_finite_strain(CellTerms &terms);
   /// Wall tractions sigma*_a e_a on the faces x_a = L of stress axes, per current projected
