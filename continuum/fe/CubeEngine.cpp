@@ -175,7 +175,8 @@ void CubeEngine::Impl::make_mesh_and_dofs()
                                             Point<3>(L[0], L[1], L[2]), /*colorize=*/true);
   tria.refine_global(levels);
   const std::array<unsigned, 3> n = prm.cells();
-  h_e = std::cbrt(L.prod() / (double(n[0]) * n[1] * n[2])); // the cube root of the cell volume
+  h_e = prm.box_edges.isZero() ? prm.side / prm.cells_per_side // the cube, as it always was
+                               : std::cbrt(L.prod() / (double(n[0]) * n[1] * n[2])); // the cube root of the cell volume
 
   dof_handler.distribute_dofs(fe);
   owned = dof_handler.locally_owned_dofs();
@@ -258,7 +259,9 @@ void CubeEngine::Impl::setup_quadrature_data()
 {
   MaterialVariant base, weak;
   if (prm.regularization == "crack-band") {
-    const double l_ref = prm.band_reference_width > 0.0 ? prm.band_reference_width : std::cbrt(prm.edges().prod());
+    const double l_ref = prm.band_reference_width > 0.0 ? prm.band_reference_width
+                             : prm.box_edges.isZero() ? prm.side
+                                                      : std::cbrt(prm.edges().prod());
     base.softening_scale = l_ref / h_e;
   }
   weak = base;
@@ -1115,7 +1118,7 @@ ResponseSample CubeEngine::measure()
               double(m.interval_steps),
               double(m.interval_cutbacks),
               double(m.interval_relaxed),
-              plastic_volume / m.prm.edges().prod(),
+              plastic_volume / (m.prm.box_edges.isZero() ? std::pow(m.prm.side, 3) : m.prm.edges().prod()),
               kappa_max,
               m.q_min,
               m.onset_time,
