@@ -10,6 +10,7 @@
 #include "compare/Metrics.h"
 #include "compare/case/CaseDescription.h"
 
+#include <optional>
 #include <pybind11/pybind11.h>
 
 #include <memory>
@@ -95,6 +96,11 @@ pybind11::dict progress_dict(const RunProgress &p);
 struct CallbackRaised : std::runtime_error {
   CallbackRaised() : std::runtime_error("the Python progress callback raised") {}
 };
+
+/// Calls a progress callback with `state` (the caller holds the GIL); when it raises, or a
+/// signal is pending, keeps the Python exception in `raised` and throws CallbackRaised.
+void call_progress(const pybind11::object &callback, const pybind11::dict &state,
+                   std::optional<pybind11::error_already_set> &raised);
 
 void bind_case(pybind11::module_ &m);
 void bind_response(pybind11::module_ &m);

@@ -31,6 +31,18 @@ void ensure_mpi()
   started = true;
 }
 
+void call_progress(const py::object &callback, const py::dict &state, std::optional<py::error_already_set> &raised)
+{
+  try {
+    callback(state);
+    if (PyErr_CheckSignals() != 0)
+      throw py::error_already_set();
+  } catch (py::error_already_set &python_error) {
+    raised.emplace(std::move(python_error));
+    throw CallbackRaised();
+  }
+}
+
 /// run()'s progress dict (its docstring lists the keys).
 py::dict progress_dict(const RunProgress &p)
 {
@@ -70,14 +82,7 @@ PyResponse run(const PyCase &c, const std::string &engine, const std::optional<s
   if (progress)
     runner.on_progress([&](const RunProgress &p) {
       py::gil_scoped_acquire gil;
-      try {
-        (*progress)(progress_dict(p));
-        if (PyErr_CheckSignals() != 0)
-          throw py::error_already_set();
-      } catch (py::error_already_set &python_error) {
-        raised.emplace(std::move(python_error));
-        throw CallbackRaised();
-      }
+      call_progress(*progress, progress_dict(p), raised);
     });
   Response r;
   try {
@@ -111,16 +116,9 @@ py::dict pair(const PyCase &c, const std::optional<std::string> &output, bool fo
   if (progress)
     settings.progress = [&](const std::string &engine, const RunProgress &p) {
       py::gil_scoped_acquire gil;
-      try {
-        py::dict state = progress_dict(p);
-        state["engine"] = engine;
-        (*progress)(state);
-        if (PyErr_CheckSignals() != 0)
-          throw py::error_already_set();
-      } catch (py::error_already_set &python_error) {
-        raised.emplace(std::move(python_error));
-        throw CallbackRaised();
-      }
+      py::dict state = progress_dict(p);
+      state["engine"] = engine;
+      call_progress(*progress, state, raised);
     };
   cli::PairOutcome outcome;
   try {

@@ -78,19 +78,12 @@ py::dict run(const Study &s, bool force, const std::optional<py::function> &prog
       py::gil_scoped_acquire gil;
       if (raised)
         throw CallbackRaised();
-      try {
-        py::dict state = progress_dict(p);
-        state["engine"] = engine;
-        state["case"] = s.cases[k].name;
-        state["case_index"] = k;
-        state["case_count"] = s.cases.size();
-        (*progress)(state);
-        if (PyErr_CheckSignals() != 0)
-          throw py::error_already_set();
-      } catch (py::error_already_set &python_error) {
-        raised.emplace(std::move(python_error));
-        throw CallbackRaised();
-      }
+      py::dict state = progress_dict(p);
+      state["engine"] = engine;
+      state["case"] = s.cases[k].name;
+      state["case_index"] = k;
+      state["case_count"] = s.cases.size();
+      call_progress(*progress, state, raised);
     };
   cli::StudyOutcome out;
   {
