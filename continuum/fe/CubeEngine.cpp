@@ -572,23 +572,40 @@ void CubeEngine::Impl::cell_tractions(CellTerms &c, double t)
   }
 }
 
-// @sect4{Threads over the points}
+// @sect4{The points' updates: memorized, and on threads}
+//
+// A material update is a pure function of the point's input (its strain, or F) and its
+// committed history. Each point keeps its last update with that input (QuadraturePointData::
+// Memo), valid while the committed history is unchanged (history_epoch: raised by commit and
+// restore); an update asked again for the same doubles takes the memo, bit for bit. Newton
+// asks twice at every iterate: the line search evaluates the residual at u + alpha du, and the
+// next iteration assembles its tangent at the same u - for an RVE per point the second
+// evaluation was half the cost of a load step.
 //
 // With threads > 1 each assembly pass first computes every locally owned point's input (its
-// strain, or F, exactly as the pass will: the same FEValues calls) and then its material
-// update on `threads` OpenMP threads, one point per task (an RVE per point costs 10^5 to 10^7
-// times a return map, and the points' costs differ: dynamic schedule). The results wait in
-// QuadraturePointData::Ahead; the pass takes a point's result when its input is the same
-// doubles and computes it otherwise. Updates are pure functions of (input, committed history),
-// and the pass sums in cell order as before: the same bits for any thread count.
+// strain, or F, exactly as the pass will: the same FEValues calls) and then the updates its
+// memo does not hold, on `threads` OpenMP threads, one point per task (an RVE per point costs
+// 10^5 to 10^7 times a return map, and the points' costs differ: dynamic schedule). The pass
+// then finds them in the memos. The pass sums in cell order as before: the same bits for any
+// thread count.
+namespace {
+template <class Input>
+bool memo_holds(const QuadraturePointData::Memo &memo, unsigned long epoch, const Input &memorized,
+                const Input &input)
+{
+  return memo.epoch == epoch && memorized == input;
+}
+} // namespace
+
 void CubeEngine::Impl::update_points_ahead()
 {
-  ++assembly_pass;
   if (prm.threads <= 1)
     return;
   const bool finite = prm.kinematics == Kinematics::finite_strain;
   CellTerms terms(*this, false);
   std::vector<QuadraturePointData *> points;
+  std::vector<Matrix3> gradients;
+  std::vector<Vector6> strains;
   for (const auto &cell : dof_handler.active_cell_iterators()) {
     if (!cell->is_locally_owned())
       continue;
@@ -600,51 +617,82 @@ void CubeEngine::Impl::update_points_ahead()
     const auto data = qp_data.get_data(Cell(cell));
     for (unsigned q = 0; q < data.size(); ++q) {
       QuadraturePointData &d = *data[q];
-      if (finite)
-        d.ahead.deformation_gradient = deformation_gradient(terms.gradients[q]);
-      else
-        d.ahead.strain = mandel(terms.strains[q]) + prestrain;
+      const Matrix3 F = finite ? deformation_gradient(terms.gradients[q]) : Matrix3::Identity();
+      const Vector6 strain = finite ? Vector6::Zero() : Vector6(mandel(terms.strains[q]) + prestrain);
+      if (finite ? memo_holds(d.memo, history_epoch, d.memo.deformation_gradient, F)
+                 : memo_holds(d.memo, history_epoch, d.memo.strain, strain))
+        continue;
       points.push_back(&d);
+      gradients.push_back(F);
+      strains.push_back(strain);
     }
   }
   std::vector<std::string> errors(points.size());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(prm.threads)
   for (std::size_t k = 0; k < points.size(); ++k) {
-    QuadraturePointData &d = *points[k];
-    d.ahead.failed = false;
+    QuadraturePointData::Memo &memo = points[k]->memo;
+    const QuadraturePointData &d = *points[k];
+    memo.epoch = 0;
+    memo.failed = false;
+    memo.deformation_gradient = gradients[k];
+    memo.strain = strains[k];
     try {
       if (finite)
-        d.ahead.finite = finite_strain_update(*d.material, d.ahead.deformation_gradient, d.old_finite);
+        memo.finite = finite_strain_update(*d.material, gradients[k], d.old_finite);
       else
-        d.ahead.small = d.material->update(d.ahead.strain, d.old_history);
+        memo.small = d.material->update(strains[k], d.old_history);
+      memo.epoch = history_epoch;
     } catch (const ReturnMapFailure &) {
-      d.ahead.failed = true;
+      memo.failed = true;
+      memo.epoch = history_epoch;
     } catch (const std::exception &e) {
       errors[k] = e.what(); // no exception leaves an OpenMP region
     }
-    d.ahead.pass = assembly_pass;
   }
+  stats.material_updates += points.size();
   for (const std::string &e : errors)
     if (!e.empty())
       throw std::runtime_error(e);
 }
 
-MaterialPointUpdate CubeEngine::Impl::small_update(const QuadraturePointData &d, const Vector6 &strain) const
+MaterialPointUpdate CubeEngine::Impl::small_update(QuadraturePointData &d, const Vector6 &strain)
 {
-  if (d.ahead.pass != assembly_pass || d.ahead.strain != strain)
-    return d.material->update(strain, d.old_history);
-  if (d.ahead.failed)
-    throw ReturnMapFailure("the point's update computed ahead failed");
-  return d.ahead.small;
+  QuadraturePointData::Memo &memo = d.memo;
+  if (!memo_holds(memo, history_epoch, memo.strain, strain)) {
+    ++stats.material_updates;
+    memo.epoch = 0;
+    memo.strain = strain;
+    memo.failed = false;
+    try {
+      memo.small = d.material->update(strain, d.old_history);
+    } catch (const ReturnMapFailure &) {
+      memo.failed = true;
+    }
+    memo.epoch = history_epoch;
+  }
+  if (memo.failed)
+    throw ReturnMapFailure("the point's material update failed");
+  return memo.small;
 }
 
-FiniteStrainUpdate CubeEngine::Impl::finite_update(const QuadraturePointData &d, const Matrix3 &F) const
+FiniteStrainUpdate CubeEngine::Impl::finite_update(QuadraturePointData &d, const Matrix3 &F)
 {
-  if (d.ahead.pass != assembly_pass || d.ahead.deformation_gradient != F)
-    return finite_strain_update(*d.material, F, d.old_finite);
-  if (d.ahead.failed)
-    throw ReturnMapFailure("the point's update computed ahead failed");
-  return d.ahead.finite;
+  QuadraturePointData::Memo &memo = d.memo;
+  if (!memo_holds(memo, history_epoch, memo.deformation_gradient, F)) {
+    ++stats.material_updates;
+    memo.epoch = 0;
+    memo.deformation_gradient = F;
+    memo.failed = false;
+    try {
+      memo.finite = finite_strain_update(*d.material, F, d.old_finite);
+    } catch (const ReturnMapFailure &) {
+      memo.failed = true;
+    }
+    memo.epoch = history_epoch;
+  }
+  if (memo.failed)
+    throw ReturnMapFailure("the point's material update failed");
+  return memo.finite;
 }
 
 double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
@@ -810,6 +858,7 @@ void CubeEngine::Impl::commit()
         d->old_stress = d->trial.stress;
         d->old_region = d->trial.region;
       }
+  ++history_epoch; // every memo belonged to the history just replaced
   old_solution = solution_owned;
   committed_wall_stress = wall_stresses();
 }
@@ -994,7 +1043,9 @@ std::vector<ExtraColumn> CubeEngine::extra_columns() const
           {"localization_z", "m", "onset point, z"},
           {"localization_nx", "1", "band normal at onset, x"},
           {"localization_ny", "1", "band normal at onset, y"},
-          {"localization_nz", "1", "band normal at onset, z"}};
+          {"localization_nz", "1", "band normal at onset, z"},
+          {"material_updates", "1",
+           "quadrature-point material updates computed in the last interval (FEM x DEM: RVE runs, its cost)"}};
 }
 
 void CubeEngine::begin_control(const StageControl &control)
@@ -1031,6 +1082,7 @@ void CubeEngine::advance_to(double t_end)
   if (m.ramp_t1 < 0.0)
     m.ramp_t1 = t_end;
   m.interval_steps = m.interval_iterations = m.interval_cutbacks = m.interval_relaxed = 0;
+  m.interval_updates_from = m.stats.material_updates;
   const double dt_nominal = (t_end - m.time) / m.prm.steps_per_advance;
   double dt = dt_nominal;
   unsigned level = 0; // current number of halvings below the nominal step
@@ -1127,7 +1179,8 @@ ResponseSample CubeEngine::measure()
               m.onset_position[2],
               m.onset_normal[0],
               m.onset_normal[1],
-              m.onset_normal[2]};
+              m.onset_normal[2],
+              double(Utilities::MPI::sum(m.stats.material_updates - m.interval_updates_from, m.comm))};
 
   if (!m.prm.output_directory.empty() && m.measure_count % m.prm.output_every == 0)
     m.write_output(m.time);
@@ -1192,6 +1245,7 @@ void CubeEngine::restore(const EngineState &state)
         d->q = p.q;
         d->normal = p.normal;
       }
+  ++m.history_epoch;
   m.old_solution = s.solution;
   m.solution_owned = s.solution;
   m.solution = m.solution_owned;

@@ -143,6 +143,9 @@ struct CubeStatistics {
   unsigned relaxed_steps = 0;     ///< steps accepted at the stagnation tolerance, total
   unsigned linear_iterations = 0; ///< total Krylov iterations
   unsigned preconditioner_builds = 0; ///< AMG (or Jacobi) set-ups, total
+  /// Material updates of quadrature points computed (not taken from a point's memo), total:
+  /// the cost measure of a material that is expensive per point (an RVE).
+  unsigned long material_updates = 0;
   double assembly_seconds = 0.0, solve_seconds = 0.0, total_seconds = 0.0;
   /// Residual history |R|/scale of the last converged step (for convergence-rate tests).
   std::vector<double> last_step_residuals;

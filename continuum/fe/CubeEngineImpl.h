@@ -62,17 +62,19 @@ struct QuadraturePointData {
   // Localization indicator at the last committed state.
   double q = 1.0;
   Vector3 normal = Vector3::Zero();
-  /// The update of the current assembly pass computed ahead, in parallel over the points
-  /// (CubeParameters::threads > 1; CubeEngine.cpp, update_points_ahead): valid for the pass
-  /// numbered `pass` and the input it was computed from, bit for bit.
-  struct Ahead {
-    unsigned long pass = 0; ///< 0: never
-    bool failed = false;    ///< the update threw ReturnMapFailure
+  /// The point's last material update and the input it was computed from (CubeEngine.cpp,
+  /// "The points' updates"): an update is a pure function of (input, committed history), so
+  /// while the committed history is the one of `epoch` the same input takes this result, bit
+  /// for bit, instead of computing it again (a tangent assembled at the iterate whose residual
+  /// the line search just evaluated; the updates of threads > 1 computed ahead of a pass).
+  struct Memo {
+    unsigned long epoch = 0; ///< Impl::history_epoch it belongs to; 0: none
+    bool failed = false;     ///< the update threw ReturnMapFailure
     Vector6 strain = Vector6::Zero();
     Matrix3 deformation_gradient = Matrix3::Identity();
     MaterialPointUpdate small;
     FiniteStrainUpdate finite;
-  } ahead;
+  } memo;
 };
 
 struct CubeEngine::Impl {
@@ -100,12 +102,15 @@ struct CubeEngine::Impl {
   /// The strains of a cell's points at `solution` into terms.strains (B-bar: with the cell's
   /// mean volumetric strain, and terms.mean_div the mean divergences).
   void small_strains(CellTerms &terms) const;
-  /// The points' updates of the coming pass, computed in parallel over the points
-  /// (threads > 1); then small_update / finite_update find them.
+  /// The points' updates of the coming pass computed ahead in parallel over the points
+  /// (threads > 1) into their memos; small_update / finite_update take a point's memo when
+  /// its input and committed history are the same and compute (and memorize) otherwise.
   void update_points_ahead();
-  MaterialPointUpdate small_update(const QuadraturePointData &d, const Vector6 &strain) const;
-  FiniteStrainUpdate finite_update(const QuadraturePointData &d, const Matrix3 &F) const;
-  unsigned long assembly_pass = 0; ///< numbers the assembly passes (QuadraturePointData::Ahead)
+  MaterialPointUpdate small_update(QuadraturePointData &d, const Vector6 &strain);
+  FiniteStrainUpdate finite_update(QuadraturePointData &d, const Matrix3 &F);
+  /// Numbers the committed histories: raised whenever the points' committed history changes
+  /// (commit, restore), which invalidates every memo.
+  unsigned long history_epoch = 1;
   bool cell_finite_strain(CellTerms &terms);
   /// Wall tractions sigma*_a e_a on the faces x_a = L of stress axes, per current projected
   /// area at finite strain (with the load stiffness when the matrix is assembled).
@@ -190,6 +195,7 @@ struct CubeEngine::Impl {
   // Statistics.
   CubeStatistics stats;
   unsigned interval_steps = 0, interval_iterations = 0, interval_cutbacks = 0, interval_relaxed = 0;
+  unsigned long interval_updates_from = 0; ///< stats.material_updates at the interval's start
 
   // Output bookkeeping.
   unsigned measure_count = 0, output_count = 0;
