@@ -147,12 +147,13 @@ Tensor3 global_deformation(const LocalStrainField &f)
   return X * Y.inverse();
 }
 
-double angle_between_lines(const Vector3 &a, const Vector3 &b)
+} // namespace
+
+double angle_between_lines_deg(const Vector3 &a, const Vector3 &b)
 {
   const double c = std::abs(a.normalized().dot(b.normalized()));
   return std::acos(std::min(1.0, c)) * rad2deg;
 }
-} // namespace
 
 std::size_t LocalStrainField::valid_count() const
 {
@@ -246,6 +247,11 @@ double heterogeneity(const LocalStrainField &f, HeterogeneityIndex index)
   for (std::size_t i = 0; i < f.eta.size(); ++i)
     if (f.valid[i])
       v.push_back(f.eta[i]);
+  return heterogeneity(std::move(v), index);
+}
+
+double heterogeneity(std::vector<double> v, HeterogeneityIndex index)
+{
   if (v.size() < 2)
     return nan;
   const double sum = std::accumulate(v.begin(), v.end(), 0.0);
@@ -263,40 +269,60 @@ double heterogeneity(const LocalStrainField &f, HeterogeneityIndex index)
   return std::sqrt(var / v.size()) / mean;
 }
 
-BandFit fit_band(const LocalStrainField &f, const LocalizationOptions &o)
+IndexOnset first_reaching(const std::vector<double> &labels, const std::vector<double> &index, double threshold)
 {
-  BandFit b;
+  IndexOnset o;
+  for (std::size_t j = 0; j < index.size() && j < labels.size(); ++j) {
+    if (!(index[j] >= threshold))
+      continue;
+    o.found = true;
+    o.increment = j;
+    if (j == 0 || !std::isfinite(index[j - 1]))
+      o.label = labels[j];
+    else {
+      const double t = (threshold - index[j - 1]) / (index[j] - index[j - 1]);
+      o.label = labels[j - 1] + std::clamp(t, 0.0, 1.0) * (labels[j] - labels[j - 1]);
+    }
+    break;
+  }
+  return o;
+}
+
+BandCluster band_cluster(const std::vector<Vector3> &reference, const std::vector<double> &value,
+                         const std::vector<char> &valid_flags, const LocalizationOptions &o)
+{
+  BandCluster b;
   std::vector<std::size_t> valid;
-  for (std::size_t i = 0; i < f.eta.size(); ++i)
-    if (f.valid[i])
+  for (std::size_t i = 0; i < value.size(); ++i)
+    if (valid_flags[i])
       valid.push_back(i);
   if (valid.size() < o.min_cluster)
     return b;
   double mean = 0.0, var = 0.0;
   for (std::size_t i : valid)
-    mean += f.eta[i];
+    mean += value[i];
   mean /= valid.size();
   for (std::size_t i : valid)
-    var += (f.eta[i] - mean) * (f.eta[i] - mean);
+    var += (value[i] - mean) * (value[i] - mean);
   const double threshold = mean + o.band_sd_factor * std::sqrt(var / valid.size());
   std::vector<std::size_t> sel;
   for (std::size_t i : valid)
-    if (f.eta[i] > threshold)
+    if (value[i] > threshold)
       sel.push_back(i);
   if (sel.size() < o.min_cluster) { // fallback: the top fraction
     sel = valid;
     const std::size_t top =
       std::max(o.min_cluster, static_cast<std::size_t>(std::ceil(o.band_top_fraction * valid.size())));
     std::nth_element(sel.begin(), sel.begin() + (std::min(top, sel.size()) - 1), sel.end(),
-                     [&](std::size_t a, std::size_t c) { return f.eta[a] > f.eta[c]; });
+                     [&](std::size_t a, std::size_t c) { return value[a] > value[c]; });
     sel.resize(std::min(top, sel.size()));
   }
   b.selected = sel.size();
 
-  // Clusters: connected components of the selected particles' reference neighbour graph.
+  // Clusters: connected components of the selected points' reference neighbour graph.
   std::vector<Vector3> pts;
   for (std::size_t i : sel)
-    pts.push_back(f.reference[i]);
+    pts.push_back(reference[i]);
   std::vector<std::size_t> parent(sel.size());
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](std::size_t a) {
@@ -318,23 +344,36 @@ BandFit fit_band(const LocalStrainField &f, const LocalizationOptions &o)
   }
   if (!largest || largest->size() < o.min_cluster)
     return b;
+  for (std::size_t k : *largest)
+    b.members.push_back(sel[k]);
+  return b;
+}
+
+BandFit fit_band(const LocalStrainField &f, const LocalizationOptions &o)
+{
+  BandFit b;
+  const BandCluster cluster = band_cluster(f.reference, f.eta, f.valid, o);
+  b.selected = cluster.selected;
+  b.clusters = cluster.clusters;
+  if (cluster.members.empty())
+    return b;
 
   // PCA of the current positions of the largest cluster.
   Vector3 c = Vector3::Zero();
-  for (std::size_t k : *largest)
-    c += f.current[sel[k]];
-  c /= double(largest->size());
+  for (std::size_t i : cluster.members)
+    c += f.current[i];
+  c /= double(cluster.members.size());
   Tensor3 cov = Tensor3::Zero();
-  for (std::size_t k : *largest) {
-    const Vector3 d = f.current[sel[k]] - c;
+  for (std::size_t i : cluster.members) {
+    const Vector3 d = f.current[i] - c;
     cov += d * d.transpose();
   }
-  cov /= double(largest->size());
+  cov /= double(cluster.members.size());
   Eigen::SelfAdjointEigenSolver<Tensor3> eig(cov);
   b.found = true;
   b.normal = eig.eigenvectors().col(0).normalized();
   b.centroid = c;
-  b.band_particles = largest->size();
+  b.band_particles = cluster.members.size();
   b.planarity = eig.eigenvalues()[1] > 0.0 ? 1.0 - eig.eigenvalues()[0] / eig.eigenvalues()[1] : 0.0;
 
   // Principal axes of the loading: given, or from the global affine map of the increment.
@@ -344,8 +383,8 @@ BandFit fit_band(const LocalStrainField &f, const LocalizationOptions &o)
                                                               : Vector3(axes.eigenvectors().col(0));
   b.intermediate_axis = o.intermediate_axis.squaredNorm() > 0.0 ? Vector3(o.intermediate_axis.normalized())
                                                                 : Vector3(axes.eigenvectors().col(1));
-  b.angle_to_compressive_deg = angle_between_lines(b.normal, b.compressive_axis);
-  b.angle_to_intermediate_deg = angle_between_lines(b.normal, b.intermediate_axis);
+  b.angle_to_compressive_deg = angle_between_lines_deg(b.normal, b.compressive_axis);
+  b.angle_to_intermediate_deg = angle_between_lines_deg(b.normal, b.intermediate_axis);
   return b;
 }
 
@@ -356,26 +395,17 @@ LocalizationResult detect_localization(const std::vector<ParticleSnapshot> &snap
     throw std::invalid_argument("localization needs at least 2 snapshots");
   LocalizationResult r;
   for (std::size_t k = 1; k < snapshots.size(); ++k) {
-    const LocalStrainField f = local_strain(snapshots[k - 1], snapshots[k], o.strain);
-    const double h = heterogeneity(f, o.index);
     r.labels.push_back(snapshots[k].label);
-    r.index.push_back(h);
-    const bool last = k + 1 == snapshots.size();
-    if (!r.onset_found && h >= o.threshold) {
-      r.onset_found = true;
-      r.onset_snapshot = k;
-      const std::size_t j = r.index.size() - 1;
-      if (j == 0 || !std::isfinite(r.index[j - 1]))
-        r.onset_label = r.labels[j];
-      else {
-        const double t = (o.threshold - r.index[j - 1]) / (r.index[j] - r.index[j - 1]);
-        r.onset_label = r.labels[j - 1] + std::clamp(t, 0.0, 1.0) * (r.labels[j] - r.labels[j - 1]);
-      }
-      r.band = fit_band(f, o);
-    } else if (last && !r.onset_found) {
-      r.band = fit_band(f, o);
-    }
+    r.index.push_back(heterogeneity(local_strain(snapshots[k - 1], snapshots[k], o.strain), o.index));
   }
+  const IndexOnset onset = first_reaching(r.labels, r.index, o.threshold);
+  r.onset_found = onset.found;
+  r.onset_label = onset.label;
+  // The band on the onset increment, or on the last one when there is no onset.
+  const std::size_t k = onset.found ? onset.increment + 1 : snapshots.size() - 1;
+  if (onset.found)
+    r.onset_snapshot = k;
+  r.band = fit_band(local_strain(snapshots[k - 1], snapshots[k], o.strain), o);
   return r;
 }
 

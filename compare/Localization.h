@@ -17,6 +17,9 @@
 // mean + k SD, split into neighbour-connected clusters; the largest is fitted by a plane
 // (PCA: the normal is the eigenvector of the smallest eigenvalue of the position
 // covariance). Neighbours come from a uniform cell grid of edge r_c (O(N)).
+// The index, the threshold crossing and the band's cluster work on plain values too
+// (heterogeneity of values, first_reaching, band_cluster): the FE engines' strain-field
+// onset on their recorded mid-planes uses the same ones (SectionLocalization.h).
 #include "common/Tensor.h"
 
 #include <cstdint>
@@ -94,8 +97,37 @@ struct LocalizationOptions {
 };
 
 double heterogeneity(const LocalStrainField &field, HeterogeneityIndex index);
+/// The index of a field given as its valid values only (the particles', or the points' of a
+/// section: SectionLocalization.h); NaN with fewer than 2 values, 0 for an all-zero field.
+double heterogeneity(std::vector<double> values, HeterogeneityIndex index);
 
-/// Plane through the high-strain particles of a field.
+/// Where an index series first reaches the threshold: `increment` is the first j with
+/// index[j] >= threshold, `label` the crossing interpolated linearly between label[j - 1]
+/// and label[j] (label[j] itself when j = 0 or index[j - 1] is NaN). Each index belongs to
+/// the label at the end of its increment.
+struct IndexOnset {
+  bool found = false;
+  double label = 0.0;
+  std::size_t increment = 0;
+};
+IndexOnset first_reaching(const std::vector<double> &labels, const std::vector<double> &index, double threshold);
+
+/// The band's members in a field: the points with a value above mean + k SD (or the top
+/// fraction, at least min_cluster, when fewer pass), split into clusters connected through
+/// neighbours within options.strain.radius of their `reference` positions; the largest
+/// cluster (empty when it has fewer than min_cluster members).
+struct BandCluster {
+  std::vector<std::size_t> members; ///< indices into the field
+  std::size_t selected = 0;         ///< above the selection threshold
+  std::size_t clusters = 0;         ///< clusters with at least min_cluster members
+};
+BandCluster band_cluster(const std::vector<Vector3> &reference, const std::vector<double> &value,
+                         const std::vector<char> &valid, const LocalizationOptions &options);
+
+/// The angle between two lines of directions a and b, in [0, 90] degrees.
+double angle_between_lines_deg(const Vector3 &a, const Vector3 &b);
+
+/// Plane through the high-strain particles of a field (band_cluster, then PCA).
 BandFit fit_band(const LocalStrainField &field, const LocalizationOptions &options);
 
 struct LocalizationResult {
