@@ -442,10 +442,11 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
       << format_number(v.tolerances.strain_absolute * 100) << " % strain), angle within "
       << format_number(v.tolerances.angle_deg) << "&deg;.</p>\n"
       << "<table id=\"verdict\"><tr><th>source</th><th>onset strain [%]</th><th>angle [deg]</th>"
-         "<th>&Delta; strain [%]</th><th>&Delta; strain rel. [%]</th><th>&Delta; angle [deg]</th><th>verdict</th></tr>\n";
+         "<th>&Delta; strain [%]</th><th>&Delta; strain rel. [%]</th><th>&Delta; angle [deg]</th><th>verdict</th>"
+         "<th>how it was found</th></tr>\n";
     const OnsetDisplay p = display(v.predicted);
     h << "<tr><td>" << html_text(v.predicted.source) << " (prediction)</td>" << num_cell(p.strain_pct, "rudnicki_rice/predicted/onset_strain_pct")
-      << num_cell(p.angle_deg, "rudnicki_rice/predicted/angle_deg") << "<td></td><td></td><td></td><td>"
+      << num_cell(p.angle_deg, "rudnicki_rice/predicted/angle_deg") << "<td></td><td></td><td></td><td></td><td>"
       << html_text(v.predicted.found ? v.predicted.note : "no onset predicted") << "</td></tr>\n";
     for (std::size_t k = 0; k < v.rows.size(); ++k) {
       const auto &r = v.rows[k];
@@ -456,7 +457,7 @@ std::string build_html(const ReportInput &in, const std::vector<std::string> &pn
         << num_cell(r.comparable ? r.strain_difference * 100 : NAN, base + "strain_difference_pct")
         << num_cell(r.comparable ? r.strain_relative * 100 : NAN, base + "strain_relative_pct")
         << num_cell(r.comparable ? r.angle_difference_deg : NAN, base + "angle_difference_deg") << "<td>"
-        << html_text(r.verdict) << "</td></tr>\n";
+        << html_text(r.verdict) << "</td><td class=\"onset-note\">" << html_text(r.onset.note) << "</td></tr>\n";
     }
     h << "</table>\n";
   }
@@ -559,7 +560,8 @@ std::string metrics_json(const ReportInput &in)
     j << ",\n  \"rudnicki_rice\": {\n    \"summary\": " << json_string(v.summary)
       << ",\n    \"predicted\": {\"source\": " << json_string(v.predicted.source)
       << ", \"found\": " << (v.predicted.found ? "true" : "false") << ", \"onset_strain_pct\": " << format_number(p.strain_pct)
-      << ", \"angle_deg\": " << format_number(p.angle_deg) << "},\n    \"rows\": [";
+      << ", \"angle_deg\": " << format_number(p.angle_deg) << ", \"note\": " << json_string(v.predicted.note)
+      << "},\n    \"rows\": [";
     for (std::size_t k = 0; k < v.rows.size(); ++k) {
       const auto &r = v.rows[k];
       const OnsetDisplay d = display(r.onset);
@@ -569,7 +571,7 @@ std::string metrics_json(const ReportInput &in)
         << ", \"strain_difference_pct\": " << format_number(r.comparable ? r.strain_difference * 100 : NAN)
         << ", \"strain_relative_pct\": " << format_number(r.comparable ? r.strain_relative * 100 : NAN)
         << ", \"angle_difference_deg\": " << format_number(r.comparable ? r.angle_difference_deg : NAN)
-        << ", \"verdict\": " << json_string(r.verdict) << "}";
+        << ", \"verdict\": " << json_string(r.verdict) << ", \"note\": " << json_string(r.onset.note) << "}";
     }
     j << "\n    ]\n  }";
   }

@@ -56,7 +56,8 @@ struct ReportInput {
   std::vector<NamedResponse> responses;
   std::vector<NamedMetrics> metrics; ///< the first is the reference of the differences
   std::optional<RrVerdict> verdict;
-  /// Maps at the named states (B, peak, D, DEM onset), DEM | FE per row (SectionMaps.h);
+  /// Maps at the named states (B, peak, D, DEM onset), one panel per engine's section
+  /// (DEM | FE cube | FEM x DEM) per row (SectionMaps.h);
   /// `state_maps_note` says where the states and the sections come from.
   std::vector<StateMaps> state_maps;
   std::string state_maps_note;

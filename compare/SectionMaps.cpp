@@ -21,10 +21,10 @@ double largest_magnitude(const std::vector<double> &v)
 }
 
 /// The recorded state nearest `strain`, or a panel saying why there is none.
-MapPanel locate(const StrainedSection &s, const std::string &engine, double strain, double max_gap,
-                std::size_t &index)
+MapPanel locate(const StrainedSection &s, double strain, double max_gap, std::size_t &index)
 {
   MapPanel p;
+  const std::string &engine = s.engine;
   p.engine = engine;
   if (!s.series || s.strains.empty()) {
     p.missing = engine + ": no mid-section recorded";
@@ -44,6 +44,7 @@ MapPanel locate(const StrainedSection &s, const std::string &engine, double stra
   p.x = s.series->x;
   p.z = s.series->z;
   p.marker = s.series->marker;
+  p.marker_z = s.series->marker_z;
   p.tiles = s.series->tiles;
   return p;
 }
@@ -156,7 +157,7 @@ StrainedSection strained_section(const SectionSeries &series, const Response &re
 {
   std::vector<std::size_t> samples;
   const std::vector<double> strain = onset_strain_measure(response, kind, stage, samples, axial);
-  StrainedSection s{&series, {}};
+  StrainedSection s{series.engine, &series, {}, {}};
   if (samples.empty())
     return s;
   for (double t : series.times) {
@@ -165,13 +166,16 @@ StrainedSection strained_section(const SectionSeries &series, const Response &re
       if (std::abs(response.samples[samples[k]].time - t) < std::abs(response.samples[samples[best]].time - t))
         best = k;
     s.strains.push_back(strain[best]);
+    const Tensor3 &stress = response.samples[samples[best]].stress;
+    Eigen::Matrix2d plane;
+    plane << stress(0, 0), stress(0, 2), stress(2, 0), stress(2, 2);
+    s.compressive_axes.push_back(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(plane).eigenvectors().col(0));
   }
   return s;
 }
 
-std::vector<StateMaps> state_maps(const std::vector<NamedState> &states, const StrainedSection &left,
-                                  const std::string &left_engine, const StrainedSection &right,
-                                  const std::string &right_engine, const StateMapOptions &o)
+std::vector<StateMaps> state_maps(const std::vector<NamedState> &states, const std::vector<StrainedSection> &sections,
+                                  const StateMapOptions &o)
 {
   static const char *const quantity[3] = {"u_x", "u_z", "gamma (local)"};
   std::vector<StateMaps> out;
@@ -181,17 +185,20 @@ std::vector<StateMaps> state_maps(const std::vector<NamedState> &states, const S
       out.push_back(m);
       continue;
     }
-    std::size_t kl = 0, kr = 0;
-    const MapPanel l = locate(left, left_engine, state.strain, o.max_strain_gap, kl);
-    const MapPanel r = locate(right, right_engine, state.strain, o.max_strain_gap, kr);
+    std::vector<MapPanel> located;
+    std::vector<std::size_t> recorded(sections.size(), 0);
+    for (std::size_t e = 0; e < sections.size(); ++e)
+      located.push_back(locate(sections[e], state.strain, o.max_strain_gap, recorded[e]));
     for (int q = 0; q < 3; ++q) {
-      MapRow row{quantity[q], q == 2 ? "%" : "mm", l, r, {}};
+      MapRow row{quantity[q], q == 2 ? "%" : "mm", located, {}};
       double scale = q == 2 ? std::abs(state.strain) * 100.0 : 0.0;
-      if (row.left.present)
-        fill(row.left, *left.series, kl, q, scale);
-      if (row.right.present)
-        fill(row.right, *right.series, kr, q, scale);
-      row.range = shared_colour_range({&row.left.v, &row.right.v}, scale, o.min_relative_range);
+      std::vector<const std::vector<double> *> fields;
+      for (std::size_t e = 0; e < sections.size(); ++e) {
+        if (row.panels[e].present)
+          fill(row.panels[e], *sections[e].series, recorded[e], q, scale);
+        fields.push_back(&row.panels[e].v);
+      }
+      row.range = shared_colour_range(fields, scale, o.min_relative_range);
       m.rows.push_back(std::move(row));
     }
     out.push_back(std::move(m));

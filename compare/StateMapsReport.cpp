@@ -5,6 +5,7 @@
 #include "compare/Report.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -22,16 +23,15 @@ std::string state_heading(const NamedState &s)
   return s.name + " (" + s.definition + (s.found ? ") at " + percent(s.strain) : ")");
 }
 
-/// One panel's gnuplot commands: particles as discs of their radius, FE points as tiles.
-/// The x and z ranges of both panels of a row (their points and markers), so that the DEM and
-/// FE panels frame the same extent.
+/// The x and z ranges of every panel of a row (their points and markers), so that the panels
+/// frame the same extent.
 std::string row_extent(const MapRow &row)
 {
   double x0 = INFINITY, x1 = -INFINITY, z0 = INFINITY, z1 = -INFINITY;
-  for (const MapPanel *p : {&row.left, &row.right})
-    for (std::size_t i = 0; p->present && i < p->x.size(); ++i) {
-      x0 = std::min(x0, p->x[i] - p->marker), x1 = std::max(x1, p->x[i] + p->marker);
-      z0 = std::min(z0, p->z[i] - p->marker), z1 = std::max(z1, p->z[i] + p->marker);
+  for (const MapPanel &p : row.panels)
+    for (std::size_t i = 0; p.present && i < p.x.size(); ++i) {
+      x0 = std::min(x0, p.x[i] - p.marker), x1 = std::max(x1, p.x[i] + p.marker);
+      z0 = std::min(z0, p.z[i] - p.half_height()), z1 = std::max(z1, p.z[i] + p.half_height());
     }
   if (!(x0 < x1 && z0 < z1))
     return "";
@@ -39,6 +39,7 @@ std::string row_extent(const MapRow &row)
          format_number(z1) + "]\n";
 }
 
+/// One panel's gnuplot commands: particles as discs of their radius, FE points as tiles.
 std::string panel_script(const NamedState &state, const MapRow &row, const MapPanel &p, const std::string &name)
 {
   std::ostringstream g;
@@ -52,7 +53,7 @@ std::string panel_script(const NamedState &state, const MapRow &row, const MapPa
     << "set style fill solid noborder\n" << row_extent(row);
   if (p.tiles)
     g << "plot 'data/" << name << ".dat' using 1:2:(" << format_number(p.marker) << "):("
-      << format_number(p.marker) << "):3 with boxxyerror lc palette\n";
+      << format_number(p.marker_z) << "):3 with boxxyerror lc palette\n";
   else
     g << "plot 'data/" << name << ".dat' using 1:2:(" << format_number(p.marker) << "):3 with circles lc palette\n";
   g << "set size noratio\nunset cblabel\nset autoscale\nset style fill empty\nset key top left box opaque\n";
@@ -84,9 +85,21 @@ std::string panel_html(const MapPanel &p, const std::string &png, const std::vec
 }
 } // namespace
 
-std::string state_map_png(std::size_t s, std::size_t r, int side)
+std::string state_map_png(std::size_t s, std::size_t r, const std::string &engine)
 {
-  return "state" + std::to_string(s) + "_" + std::to_string(r) + (side == 0 ? "_dem" : "_fe");
+  std::string name = "state" + std::to_string(s) + "_" + std::to_string(r) + "_";
+  bool dash = false;
+  for (char c : engine)
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      dash = false;
+    } else if (!dash && name.back() != '_') {
+      name += '-';
+      dash = true;
+    }
+  if (dash)
+    name.pop_back();
+  return name;
 }
 
 std::string state_maps_script(const std::vector<StateMaps> &maps, const fs::path &dir, std::vector<std::string> &pngs)
@@ -95,11 +108,10 @@ std::string state_maps_script(const std::vector<StateMaps> &maps, const fs::path
   for (std::size_t s = 0; s < maps.size(); ++s)
     for (std::size_t r = 0; r < maps[s].rows.size(); ++r) {
       const MapRow &row = maps[s].rows[r];
-      for (int side : {0, 1}) {
-        const MapPanel &p = side == 0 ? row.left : row.right;
+      for (const MapPanel &p : row.panels) {
         if (!p.present)
           continue;
-        const std::string name = state_map_png(s, r, side);
+        const std::string name = state_map_png(s, r, p.engine);
         write_panel_data(row, p, dir / "data" / (name + ".dat"));
         g << panel_script(maps[s].state, row, p, name);
         pngs.push_back(name + ".png");
@@ -128,8 +140,10 @@ std::string state_maps_html(const std::vector<StateMaps> &maps, const std::strin
       const MapRow &row = m.rows[r];
       h << "<div class=\"maprow\"><p>" << html_text(row.quantity) << " [" << html_text(row.unit)
         << "], one colour scale [" << format_number(row.range.low) << ", " << format_number(row.range.high)
-        << "]</p>\n" << panel_html(row.left, state_map_png(s, r, 0) + ".png", made)
-        << panel_html(row.right, state_map_png(s, r, 1) + ".png", made) << "</div>\n";
+        << "]</p>\n";
+      for (const MapPanel &p : row.panels)
+        h << panel_html(p, state_map_png(s, r, p.engine) + ".png", made);
+      h << "</div>\n";
     }
   }
   return h.str();
@@ -146,9 +160,9 @@ std::string state_maps_json(const std::vector<StateMaps> &maps)
       << ", \"strain_pct\": " << format_number(m.state.strain * 100) << ", \"missing\": " << json_string(m.state.missing)
       << ", \"panels\": [";
     if (!m.rows.empty()) // every row shows the same recorded states
-      for (int side : {0, 1}) {
-        const MapPanel &p = side == 0 ? m.rows.front().left : m.rows.front().right;
-        j << (side ? ", " : "") << "{\"engine\": " << json_string(p.engine) << ", \"present\": "
+      for (std::size_t e = 0; e < m.rows.front().panels.size(); ++e) {
+        const MapPanel &p = m.rows.front().panels[e];
+        j << (e ? ", " : "") << "{\"engine\": " << json_string(p.engine) << ", \"present\": "
           << (p.present ? "true" : "false") << ", \"strain_pct\": " << format_number(p.strain * 100)
           << ", \"missing\": " << json_string(p.missing) << "}";
       }

@@ -1,7 +1,7 @@
 #pragma once
 // The report's section "Maps at named states" (SectionMaps.h): for each named state a heading
-// with its strain, or the reason it is missing, then one row per quantity, the DEM panel
-// beside the FE one on one colour scale. Report.cpp calls these for the plots, the HTML and
+// with its strain, or the reason it is missing, then one row per quantity, one panel per
+// engine (DEM | FE cube | FEM x DEM, those that recorded a section) on one colour scale. Report.cpp calls these for the plots, the HTML and
 // metrics.json, so the three read the same StateMaps.
 #include "compare/SectionMaps.h"
 
@@ -11,8 +11,9 @@
 
 namespace geocomp::compare {
 
-/// PNG file name of a panel: state s, row r, side 0 (left, DEM) or 1 (right, FE).
-std::string state_map_png(std::size_t s, std::size_t r, int side);
+/// PNG file name (without ".png") of the panel of `engine` in state s, row r: the label in
+/// lower case, other characters as one '-' ("state1_2_fem-x-dem").
+std::string state_map_png(std::size_t s, std::size_t r, const std::string &engine);
 
 /// Writes the panels' data under `dir`/data and returns their gnuplot commands; appends the
 /// PNG names to `pngs`.

@@ -112,7 +112,7 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
   std::unique_ptr<LoadingEngine> e = make_engine(engine, c, dir.string(), settings.comm);
   ProgramRunner runner(c.program, *e);
   ProgressPrinter progress(engine);
-  // Fields along the main path: the DEM's snapshots and mid-section, the cube's mid-plane.
+  // Fields along the main path: the DEM's snapshots and mid-section, each FE engine's mid-plane.
   std::unique_ptr<SnapshotRecorder> snapshots;
   std::unique_ptr<DemSectionRecorder> dem_section;
   std::unique_ptr<CubeSectionRecorder> cube_section;
@@ -120,8 +120,8 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
     snapshots = std::make_unique<SnapshotRecorder>(*d, c, dir);
     dem_section = std::make_unique<DemSectionRecorder>(*d, c, dir);
   }
-  if (const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get()); cube && engine == "continuum")
-    cube_section = std::make_unique<CubeSectionRecorder>(*cube, settings.comm); // the maps' FE column
+  if (const auto *cube = dynamic_cast<const continuum::CubeEngine *>(e.get()))
+    cube_section = std::make_unique<CubeSectionRecorder>(*cube, engine, settings.comm); // its maps and field onset
   runner.on_progress([&](const RunProgress &p) {
     if (snapshots)
       (*snapshots)(p);

@@ -8,9 +8,7 @@ namespace geocomp::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-const char *const continuum_plane_file = "continuum-midplane.h5";
-} // namespace
+std::string midplane_file(const std::string &engine) { return engine + "-midplane.h5"; }
 
 // Main-path samples of the last stage only, each once: a sample not later than the last
 // recorded one (a state the runner came back to) is not recorded again.
@@ -32,7 +30,7 @@ void CubeSectionRecorder::write(const fs::path &dir) const
   if (rank_in(comm_) != 0 || planes_.empty())
     return;
   fs::create_directories(dir);
-  write_atomically(dir / continuum_plane_file, [this](const fs::path &tmp) {
+  write_atomically(dir / midplane_file(engine_), [this](const fs::path &tmp) {
     const h5::Handle f = h5::create_file(tmp);
     const std::size_t n = planes_.front().x.size(), m = planes_.size();
     h5::write(f.id(), "x", planes_.front().x, {hsize_t(n)}, "m");
@@ -50,16 +48,18 @@ void CubeSectionRecorder::write(const fs::path &dir) const
   });
 }
 
-std::optional<compare::SectionSeries> read_cube_section(const fs::path &dir, double side, unsigned cells_per_side)
+std::optional<compare::SectionSeries> read_cube_section(const fs::path &dir, const std::string &engine,
+                                                        const std::string &label,
+                                                        const continuum::CubeParameters &mesh)
 {
-  const fs::path file = dir / continuum_plane_file;
+  const fs::path file = dir / midplane_file(engine);
   if (!fs::exists(file))
     return std::nullopt;
   const h5::Handle f = h5::open_file(file);
   if (!h5::exists(f.id(), "time")) // written by an older geocomp: the end state only
     return std::nullopt;
   compare::SectionSeries s;
-  s.engine = "FE cube";
+  s.engine = label;
   s.x = h5::read_doubles(f.id(), "x");
   s.z = h5::read_doubles(f.id(), "z");
   s.times = h5::read_doubles(f.id(), "time");
@@ -75,10 +75,15 @@ std::optional<compare::SectionSeries> read_cube_section(const fs::path &dir, dou
       s.uz[k][i] = uz[k * n + i] - uz[i];
     }
   }
-  s.centre_x = s.centre_z = 0.5 * side;
-  const double spacing = side / (3.0 * std::max(1u, cells_per_side));
-  s.strain_radius = 1.5 * spacing;
-  s.marker = 0.5 * spacing;
+  const Vector3 edges = mesh.edges();
+  const std::array<unsigned, 3> cells = mesh.cells();
+  s.centre_x = 0.5 * edges[0];
+  s.centre_z = 0.5 * edges[2];
+  const double spacing_x = edges[0] / (3.0 * std::max(1u, cells[0]));
+  const double spacing_z = edges[2] / (3.0 * std::max(1u, cells[2]));
+  s.strain_radius = 1.5 * std::max(spacing_x, spacing_z);
+  s.marker = 0.5 * spacing_x;
+  s.marker_z = 0.5 * spacing_z;
   s.tiles = true;
   return s;
 }

@@ -5,6 +5,7 @@
 #include "Mpi.h"
 #include "PairCalibration.h"
 #include "PairMaps.h"
+#include "PairSections.h"
 #include "TargetCases.h"
 
 #include "compare/LocalizationOnsets.h"
@@ -107,7 +108,9 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
   if (!c.calibration.scatter.empty())
     in.scatter = specimen_scatter(c, in.metrics, options);
   add_cross_engine(in, c, runs);
-  // Rudnicki-Rice: the theory along the material-point path against each engine's onset.
+  // Rudnicki-Rice: the theory along the material-point path against each engine's onset: the
+  // DEM's from its particles, each FE engine's acoustic tensor and its mid-plane's strain field.
+  const std::vector<PairSection> sections = recorded_sections(c, dir);
   const Response *point = nullptr;
   std::vector<compare::OnsetEstimate> onsets;
   for (const auto &[engine, response] : runs) {
@@ -115,12 +118,14 @@ compare::ReportInput report_input(const CaseDescription &c, const EngineRuns &ru
       point = &response;
     if (engine == "dem")
       add_dem_fields(in, dir, onsets);
-    else if (engine != "liggghts") // LIGGGHTS writes no fields; its stresses have no tangent to test
+    else if (engine != "liggghts") { // LIGGGHTS writes no fields; its stresses have no tangent to test
       onsets.push_back(
         compare::acoustic_tensor_onset(response, engine_label(engine) + " (acoustic tensor)", in.kind, -1, in.axial));
+      add_strain_field_onset(in, sections, engine, onsets);
+    }
   }
-  // DEM and FE maps side by side at the named states (B, peak, D, DEM onset).
-  add_state_maps(in, c, dir, onsets);
+  // One panel per recorded section at the named states (B, peak, D, DEM onset).
+  add_state_maps(in, sections, onsets);
   in.calibrated_parameters = calibration::read_parameter_table(dir / "calibration");
   // A calibrated pair's continuum engines ran the calibrated section (PairCalibration.h).
   const std::optional<CaseDescription> calibrated = calibrated_case_in(c, dir);

@@ -1,7 +1,8 @@
 #pragma once
 // `pair`: every engine a case names run on its one loading program (EngineRun.h), then
 // the comparison - metrics of every Response, the Rudnicki-Rice verdict against each
-// engine's onset, DEM and FE maps side by side at the named states - and the report.
+// engine's onsets (the FE engines' acoustic tensor and mid-plane strain field), the engines'
+// mid-section maps side by side at the named states - and the report.
 // The same code serves `geocomp pair`, each item of `geocomp sweep`, `report`/`compare`
 // on existing results and Python's geocomp.pair.
 #include "EngineRun.h"

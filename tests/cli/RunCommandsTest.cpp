@@ -119,19 +119,20 @@ TEST(PairCommand, DemAndCubeGiveSnapshotsOnsetMapsAndTheSameCurvesAgain)
   const fs::path out = s.dir / "all";
   for (const char *f : {"dem.h5", "dem-fields.h5", "dem-fields.xdmf", "dem-specimen.bin", "continuum.h5",
                         "continuum-midplane.h5", "dem-midplane.bin", "material-point.h5", "report/index.html",
-                        "report/state1_0_dem.png", "report/state1_0_fe.png", "report/state1_2_fe.png"})
+                        "report/state1_0_dem.png", "report/state1_0_fe-cube.png", "report/state1_2_fe-cube.png"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   // 12 snapshots after the first one, all on the main path of the last stage.
   const std::string groups = read_command("h5ls '" + (out / "dem-fields.h5").string() + "/snapshots'");
   EXPECT_EQ(std::count(groups.begin(), groups.end(), '\n'), 13) << groups;
   const std::string metrics = read(out / "report/metrics.json");
   EXPECT_NE(metrics.find("DEM (particle local strain)"), std::string::npos);
+  EXPECT_NE(metrics.find("FE cube (strain field)"), std::string::npos);
   EXPECT_NE(metrics.find("\"DEM\""), std::string::npos);
   // The maps at the peak (state 1): the FE u_x is measured from the box centre, as the DEM's:
   // on a shortened x axis, positive on one side of the centre and negative on the other.
   EXPECT_NE(read(out / "report/index.html").find("data-state=\"peak\""), std::string::npos);
   {
-    std::ifstream map(out / "report/data/state1_0_fe.dat");
+    std::ifstream map(out / "report/data/state1_0_fe-cube.dat");
     double lo = 0.0, hi = 0.0;
     std::string line;
     std::getline(map, line);

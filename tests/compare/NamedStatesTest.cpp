@@ -146,7 +146,7 @@ TwoSections sections(const Eigen::Vector2d &t, const Eigen::Matrix2d &G)
 std::vector<StateMaps> maps_at(const TwoSections &s, double strain)
 {
   NamedState peak{"peak", "synthetic", true, strain, NAN, ""};
-  return state_maps({peak}, {&s.dem, {0.0, strain}}, "DEM", {&s.fe, {0.0, strain}}, "FE cube");
+  return state_maps({peak}, {{"DEM", &s.dem, {0.0, strain}, {}}, {"FE cube", &s.fe, {0.0, strain}, {}}});
 }
 } // namespace
 
@@ -157,10 +157,10 @@ TEST(SectionMaps, ARigidTranslationGivesZeroDisplacementAndStrainMapsInBothEngin
   ASSERT_EQ(m.size(), 1u);
   ASSERT_EQ(m[0].rows.size(), 3u);
   for (const MapRow &row : m[0].rows)
-    for (const MapPanel *p : {&row.left, &row.right}) {
-      ASSERT_TRUE(p->present) << p->missing;
-      for (double v : p->v)
-        EXPECT_NEAR(v, 0.0, 1e-9) << row.quantity << " " << p->engine; // mm or %
+    for (const MapPanel &p : row.panels) {
+      ASSERT_TRUE(p.present) << p.missing;
+      for (double v : p.v)
+        EXPECT_NEAR(v, 0.0, 1e-9) << row.quantity << " " << p.engine; // mm or %
     }
   // Zero everywhere is one colour: the range is about zero and wider than the round-off, at
   // least 1 % of the translation before the reference (3 mm).
@@ -182,19 +182,19 @@ TEST(SectionMaps, AHomogeneousShearIsTheSameFieldAboutTheBoxCentreInBothEngines)
   G(1, 1) = a;
   const TwoSections s = sections({1e-3, 4e-3}, G);
   const std::vector<StateMaps> m = maps_at(s, 2 * a);
-  for (const MapPanel *p : {&m[0].rows[0].left, &m[0].rows[0].right}) {
-    const SectionSeries &sec = p->engine == "DEM" ? s.dem : s.fe;
-    for (std::size_t i = 0; i < p->v.size(); ++i)
-      EXPECT_NEAR(p->v[i], -a * (sec.x[i] - sec.centre_x) * 1e3, 1e-9) << p->engine;
+  for (const MapPanel &p : m[0].rows[0].panels) {
+    const SectionSeries &sec = p.engine == "DEM" ? s.dem : s.fe;
+    for (std::size_t i = 0; i < p.v.size(); ++i)
+      EXPECT_NEAR(p.v[i], -a * (sec.x[i] - sec.centre_x) * 1e3, 1e-9) << p.engine;
   }
-  for (const MapPanel *p : {&m[0].rows[1].left, &m[0].rows[1].right}) {
-    const SectionSeries &sec = p->engine == "DEM" ? s.dem : s.fe;
-    for (std::size_t i = 0; i < p->v.size(); ++i)
-      EXPECT_NEAR(p->v[i], a * (sec.z[i] - sec.centre_z) * 1e3, 1e-9) << p->engine;
+  for (const MapPanel &p : m[0].rows[1].panels) {
+    const SectionSeries &sec = p.engine == "DEM" ? s.dem : s.fe;
+    for (std::size_t i = 0; i < p.v.size(); ++i)
+      EXPECT_NEAR(p.v[i], a * (sec.z[i] - sec.centre_z) * 1e3, 1e-9) << p.engine;
   }
   std::size_t fitted = 0;
-  for (const MapPanel *p : {&m[0].rows[2].left, &m[0].rows[2].right})
-    for (double g : p->v)
+  for (const MapPanel &p : m[0].rows[2].panels)
+    for (double g : p.v)
       if (std::isfinite(g)) {
         EXPECT_NEAR(g, 2 * a * 100, 1e-9);
         ++fitted;
@@ -218,8 +218,10 @@ TEST(SectionMaps, ARowSharesOneColourRangeSpanningBothPanels)
   // A state recorded by one engine only: its panel says so, the other keeps the range.
   const TwoSections s = sections({0.0, 0.0}, Eigen::Matrix2d::Identity() * 0.01);
   NamedState late{"D", "synthetic", true, 0.2, NAN, ""};
-  const std::vector<StateMaps> m = state_maps({late}, {&s.dem, {0.0, 0.2}}, "DEM", {&s.fe, {0.0, 0.02}}, "FE cube");
-  EXPECT_TRUE(m[0].rows[0].left.present);
-  EXPECT_FALSE(m[0].rows[0].right.present);
-  EXPECT_NE(m[0].rows[0].right.missing.find("no recorded mid-section within"), std::string::npos);
+  const std::vector<StateMaps> m =
+    state_maps({late}, {{"DEM", &s.dem, {0.0, 0.2}, {}}, {"FE cube", &s.fe, {0.0, 0.02}, {}}});
+  ASSERT_EQ(m[0].rows[0].panels.size(), 2u);
+  EXPECT_TRUE(m[0].rows[0].panels[0].present);
+  EXPECT_FALSE(m[0].rows[0].panels[1].present);
+  EXPECT_NE(m[0].rows[0].panels[1].missing.find("no recorded mid-section within"), std::string::npos);
 }

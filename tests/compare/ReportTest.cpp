@@ -356,27 +356,35 @@ std::string panel_range(const std::string &gp, const std::string &png)
   return gp.substr(range + 13, gp.find(']', range) - range - 13);
 }
 
-TEST(Report, NamesEveryStateAndGivesTheDemAndFePanelsOfARowOneColourScale)
+TEST(Report, NamesEveryStateAndGivesEveryEnginesPanelOfARowOneColourScale)
 {
-  // A DEM section of scattered points and an FE grid, sheared differently (the DEM twice the
-  // FE): both panels of a row on the DEM's wider range; the onset not found is said so.
-  SectionSeries dem, fe;
+  // A DEM section of scattered points, an FE cube grid and a FEM x DEM grid of rectangular
+  // tiles, sheared differently (the DEM twice the FE cube, the FEM x DEM 1.5 times): the three
+  // panels of a row, in that order, on the DEM's wider range; the onset not found is said so.
+  SectionSeries dem, fe, femdem;
   dem.engine = "DEM";
   fe.engine = "FE cube";
+  femdem.engine = "FEM x DEM";
   for (int i = 0; i < 15; ++i)
     for (int k = 0; k < 15; ++k) {
       dem.x.push_back(-0.1 + (i + 0.3 * (k % 2)) * 0.2 / 15);
       dem.z.push_back(-0.1 + k * 0.2 / 15);
       fe.x.push_back((i + 0.5) * 0.2 / 15);
       fe.z.push_back((k + 0.5) * 0.2 / 15);
+      femdem.x.push_back((i + 0.5) * 0.1 / 15);
+      femdem.z.push_back((k + 0.5) * 0.2 / 15);
     }
   fe.centre_x = fe.centre_z = 0.1;
-  dem.strain_radius = fe.strain_radius = 0.025;
+  femdem.centre_x = 0.05;
+  femdem.centre_z = 0.1;
+  dem.strain_radius = fe.strain_radius = femdem.strain_radius = 0.025;
   dem.marker = 0.006;
-  fe.marker = 0.2 / 30;
-  fe.tiles = true;
-  for (SectionSeries *s : {&dem, &fe}) {
-    const double a = s == &dem ? 0.02 : 0.01;
+  fe.marker = fe.marker_z = 0.2 / 30;
+  femdem.marker = 0.1 / 30;
+  femdem.marker_z = 0.2 / 30;
+  fe.tiles = femdem.tiles = true;
+  for (SectionSeries *s : {&dem, &fe, &femdem}) {
+    const double a = s == &dem ? 0.02 : s == &fe ? 0.01 : 0.015;
     s->times = {0.0, 1.0, 2.0};
     for (int t = 0; t < 3; ++t) {
       s->ux.emplace_back();
@@ -392,7 +400,9 @@ TEST(Report, NamesEveryStateAndGivesTheDemAndFePanelsOfARowOneColourScale)
                                        {"D", "past the peak", true, 0.02, 4.7e6, ""},
                                        {"DEM onset", "onset", false, NAN, NAN, "no onset found (DEM)"}};
   ReportInput in = sample_input();
-  in.state_maps = state_maps(states, {&dem, {0.0, 0.01, 0.02}}, "DEM", {&fe, {0.0, 0.01, 0.02}}, "FE cube");
+  const std::vector<double> strains{0.0, 0.01, 0.02};
+  in.state_maps = state_maps(states, {{"DEM", &dem, strains, {}}, {"FE cube", &fe, strains, {}},
+                                      {"FEM x DEM", &femdem, strains, {}}});
   in.state_maps_note = "synthetic sections";
   const fs::path dir = scratch("states");
   ReportOptions o;
@@ -403,24 +413,33 @@ TEST(Report, NamesEveryStateAndGivesTheDemAndFePanelsOfARowOneColourScale)
   for (const char *name : {"B", "peak", "D", "DEM onset"})
     EXPECT_NE(html.find(std::string("data-state=\"") + name + "\""), std::string::npos) << name;
   EXPECT_NE(html.find("DEM onset: not found, no maps: no onset found (DEM)."), std::string::npos);
-  // Three states with maps, three rows each (u_x, u_z, local gamma), DEM | FE.
+  // Three states with maps, three rows each (u_x, u_z, local gamma), DEM | FE cube | FEM x DEM.
   for (std::size_t st = 0; st < 3; ++st)
     for (std::size_t r = 0; r < 3; ++r) {
-      const std::string left = state_map_png(st, r, 0) + ".png", right = state_map_png(st, r, 1) + ".png";
-      const std::string range = panel_range(gp, left);
-      ASSERT_FALSE(range.empty()) << left;
-      EXPECT_EQ(range, panel_range(gp, right)) << left;
       const MapRow &row = in.state_maps[st].rows[r];
-      EXPECT_EQ(range, format_number(row.range.low) + ":" + format_number(row.range.high));
-      for (const MapPanel *p : {&row.left, &row.right})
-        for (double v : p->v)
+      ASSERT_EQ(row.panels.size(), 3u);
+      std::size_t previous = 0;
+      for (const MapPanel &p : row.panels) {
+        const std::string png = state_map_png(st, r, p.engine) + ".png";
+        EXPECT_EQ(panel_range(gp, png), format_number(row.range.low) + ":" + format_number(row.range.high)) << png;
+        for (double v : p.v)
           if (std::isfinite(v)) {
             EXPECT_GE(v, row.range.low);
             EXPECT_LE(v, row.range.high);
           }
-      if (out.plots_made)
-        EXPECT_NE(html.find("src=\"" + left + "\""), std::string::npos);
+        if (!out.plots_made)
+          continue;
+        const std::size_t at = html.find("src=\"" + png + "\"");
+        ASSERT_NE(at, std::string::npos) << png;
+        EXPECT_GT(at, previous) << png << ": the panels in the order DEM | FE cube | FEM x DEM";
+        previous = at;
+      }
     }
+  EXPECT_EQ(state_map_png(1, 2, "FEM x DEM"), "state1_2_fem-x-dem");
+  EXPECT_EQ(state_map_png(0, 0, "FE cube"), "state0_0_fe-cube");
+  // The FEM x DEM's tiles are 0.1/15 wide and 0.2/15 high.
+  EXPECT_NE(gp.find("using 1:2:(" + format_number(0.1 / 30) + "):(" + format_number(0.2 / 30) + "):3 with boxxyerror"),
+            std::string::npos);
   // The DEM's u_x at the peak reaches a L/2 = 0.02 x 0.1 m = 2 mm at x = -L/2 (the FE's at most
   // 0.01 x 0.093 m): the row's range reaches the DEM's largest.
   EXPECT_NEAR(in.state_maps[1].rows[0].range.high, 2.0, 1e-9);
@@ -429,6 +448,12 @@ TEST(Report, NamesEveryStateAndGivesTheDemAndFePanelsOfARowOneColourScale)
   ASSERT_NE(onset, nullptr);
   EXPECT_EQ(onset->kind, Json::Bool);
   EXPECT_EQ(lookup(root, "named_states/1/strain_pct")->text, "2");
+  for (const auto &[k, engine] : std::vector<std::pair<std::string, std::string>>{{"0", "DEM"}, {"1", "FE cube"},
+                                                                                  {"2", "FEM x DEM"}}) {
+    const Json *e = lookup(root, "named_states/1/panels/" + k + "/engine");
+    ASSERT_NE(e, nullptr) << k;
+    EXPECT_EQ(e->text, engine);
+  }
   if (!std::getenv("GEOCOMP_TEST_KEEP"))
     fs::remove_all(dir.parent_path());
 }
