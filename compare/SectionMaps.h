@@ -9,15 +9,15 @@
 // slab |y - L0/2| <= 2 mean radii; FE: points of the cells of the cube or box cut by the plane
 // y = L_y/2, either FE engine's).
 //
-// One displacement reference for both engines: the displacement of the box centre X_c,
+// One displacement reference for every engine: the displacement of the box centre X_c,
 // estimated from the section's own field by the least-squares affine fit
 //     u(X) ~ a + G (X - X_bar)   over the section's points,    u_c = a + G (X_c - X_bar),
 // and subtracted from every point: exact for any affine field whatever the points' layout
 // (a rigid translation maps to zero; a homogeneous deformation to the same field about the
-// centre in both engines), and independent of which faces an engine holds (the DEM's
+// centre in every engine), and independent of which faces an engine holds (the DEM's
 // platens move about the centre, the FE cube's rollers hold the x = 0 and z = 0 faces).
 //
-// Local strain, the same measure in both engines: at each point, the best-fit in-plane
+// Local strain, the same measure in every engine: at each point, the best-fit in-plane
 // deformation gradient of its neighbours within r_c (Falk & Langer's fit, Localization.h, in
 // two dimensions), F = (sum d d0^T)(sum d0 d0^T)^-1, its Green-Lagrange strain
 // E = (F^T F - I)/2, and the in-plane maximum shear strain

@@ -6,6 +6,7 @@
 #include "compare/cli/Engines.h"
 #include "compare/cli/MidPlane.h"
 #include "compare/cli/Pair.h"
+#include "compare/cli/PairSections.h"
 #include "common/Subprocess.h"
 #include "tests/common/FileText.h"
 #include "tests/common/ScratchFolder.h"
@@ -170,4 +171,33 @@ TEST(BandReport, ATinyFemDemAndContinuumPairOnABoxReportsBothFePanelsAndTheStrai
   for (const auto &row : m["rudnicki_rice"]["rows"])
     std::printf("[tiny pair] %s: %s\n", row["source"].get<std::string>().c_str(),
                 row["note"].get<std::string>().c_str());
+}
+
+// Which sections a pair maps, before anything is read: beside a box mesh the DEM (a cube) has
+// no panel, beside a cube it comes first; each FE engine that runs has its own.
+TEST(BandReport, ADemBesideABoxMeshHasNoPanelAndBesideACubeItComesFirst)
+{
+  const test::ScratchFolder scratch("band-sections");
+  const auto engines = [&](const std::string &names, const std::string &more) {
+    std::vector<std::string> out;
+    const CaseDescription c = parse_case(box_case(names, "2, 1, 4", more, scratch.dir), "sections.prm");
+    for (const cli::PairSection &s : cli::recorded_sections(c, scratch.dir)) {
+      EXPECT_FALSE(s.series) << s.engine << ": nothing was recorded";
+      out.push_back(s.engine);
+    }
+    return out;
+  };
+  EXPECT_EQ(engines("dem, continuum, fem-dem", ""), (std::vector<std::string>{"continuum", "fem-dem"}));
+  EXPECT_EQ(engines("dem, fem-dem", ""), (std::vector<std::string>{"fem-dem"}));
+  // The same case on the cube (no box edges): DEM | FE cube | FEM x DEM.
+  const auto cube = [&](const std::string &names) {
+    std::string text = box_case(names, "2, 2, 2", "", scratch.dir);
+    text.erase(text.find("  set box edges"), text.find("  set youngs") - text.find("  set box edges"));
+    std::vector<std::string> out;
+    for (const cli::PairSection &s : cli::recorded_sections(parse_case(text, "cube.prm"), scratch.dir))
+      out.push_back(s.engine);
+    return out;
+  };
+  EXPECT_EQ(cube("fem-dem, dem, continuum"), (std::vector<std::string>{"dem", "continuum", "fem-dem"}));
+  EXPECT_EQ(cube("dem, material-point"), (std::vector<std::string>{"dem"}));
 }
