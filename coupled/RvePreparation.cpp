@@ -2,7 +2,6 @@
 
 #include "dem/DemSystem.h"
 #include "dem/periodic/PeriodicPreparation.h"
-#include "dem/periodic/PeriodicProgram.h"
 
 #include <stdexcept>
 #include <string>
@@ -17,7 +16,24 @@ double rve_critical_time_step(const dem::ContactModel &law, double radius, doubl
   return probe.critical_time_step();
 }
 
-dem::PeriodicCell prepare_rve(const RveGrains &g, const RvePreparationSettings &s)
+double rve_time_step(const RveGrains &g)
+{
+  return g.time_step_safety * rve_critical_time_step(g.law, g.radius * (1.0 - g.radius_spread), g.density);
+}
+
+dem::CompressionResult compress_rve(dem::PeriodicCell &cell, double pressure, const RveProtocol &k)
+{
+  cell.control().set_parameters(dem::MixedControl::Parameters{k.servo_gain, k.servo_max_strain_rate});
+  dem::IsotropicCompression iso;
+  iso.pressure = pressure;
+  iso.tolerance = k.stress_tolerance;
+  iso.unbalanced = k.unbalanced;
+  iso.check_interval = k.compression_check_interval;
+  iso.max_steps = k.compression_max_steps;
+  return dem::compress_isotropic(cell, iso);
+}
+
+dem::PeriodicCell prepare_rve(const RveGrains &g, const RvePreparationSettings &s, const RveProtocol &k)
 {
   dem::RandomPlacement place;
   place.particles = s.particles;
@@ -27,26 +43,23 @@ dem::PeriodicCell prepare_rve(const RveGrains &g, const RvePreparationSettings &
   place.packing_fraction = s.placement_packing_fraction;
   place.seed = s.seed;
   dem::PeriodicCell::Parameters cp;
-  cp.time_step = g.time_step_safety * rve_critical_time_step(g.law, g.radius * (1.0 - g.radius_spread), g.density);
+  cp.time_step = rve_time_step(g);
   cp.friction = 0.0;
   cp.local_damping = s.local_damping;
   dem::PeriodicCell cell = dem::place_spheres(place, g.law, cp);
 
   dem::RadiusGrowth growth;
-  growth.pressure = 0.1 * s.pressure;
-  growth.rate = 2e-5;
+  growth.pressure = k.growth_pressure_fraction * s.pressure;
+  growth.rate = k.growth_rate;
+  growth.interval = k.growth_interval;
+  growth.max_steps = k.growth_max_steps;
   const dem::GrowthResult grown = dem::grow_radii(cell, growth);
   if (!grown.reached)
     throw std::runtime_error("dem rve: the radius growth did not reach " + std::to_string(growth.pressure) +
                              " Pa in " + std::to_string(grown.steps) + " steps");
   cp.friction = g.friction;
   cell.set_parameters(cp);
-  cell.control().set_parameters(dem::MixedControl::Parameters{0.2, 3.0});
-  dem::IsotropicCompression iso;
-  iso.pressure = s.pressure;
-  iso.tolerance = 0.01;
-  iso.unbalanced = 0.02;
-  const dem::CompressionResult compressed = dem::compress_isotropic(cell, iso);
+  const dem::CompressionResult compressed = compress_rve(cell, s.pressure, k);
   if (!compressed.converged)
     throw std::runtime_error("dem rve: the isotropic compression to " + std::to_string(s.pressure) +
                              " Pa did not converge in " + std::to_string(compressed.steps) + " steps");

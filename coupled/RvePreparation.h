@@ -13,8 +13,13 @@
 //     done at 1 % on every stress component and an unbalanced-force ratio of 0.02).
 // Time step: the wall-box engine's, `time step safety` times the critical step of the
 // contact law for the smallest sphere (DemSystem::critical_time_step).
+// The radii R(1 +- a) are the placement's: the growth multiplies them until the cell carries
+// p/10, and no target radius ends it. Measured on the biaxial case's grains (R = 1 mm,
+// k_n = 1e5 N/m, 100 kPa, eta_0 = 0.3): by 1.24, a mean diameter of 2.48 mm (docs/coupled.md,
+// the RVE against the wall-bounded specimen).
 #include "dem/ContactLaw.h"
 #include "dem/periodic/PeriodicCell.h"
+#include "dem/periodic/PeriodicProgram.h"
 
 #include <cstdint>
 
@@ -39,10 +44,32 @@ struct RvePreparationSettings {
   double local_damping = 0.2;       ///< Cundall damping of the cell (growth, compression, loading)
 };
 
+/// The fixed steps of the preparation (steps 2 and 3 above), in one place: the wall-bounded
+/// specimen made the same way (coupled/wall/WallSpecimen.h) reads them from here.
+struct RveProtocol {
+  double growth_rate = 2e-5;               ///< relative radius growth per step
+  std::uint64_t growth_interval = 10;      ///< steps between radius updates
+  double growth_pressure_fraction = 0.1;   ///< the growth ends at this fraction of the pressure
+  std::uint64_t growth_max_steps = 200000;
+  double stress_tolerance = 0.01;          ///< compressed: every stress component within this of p
+  double unbalanced = 0.02;                ///< compressed: unbalanced-force ratio at most this
+  std::uint64_t compression_check_interval = 100; ///< steps between the checks of those two
+  std::uint64_t compression_max_steps = 200000;
+  double servo_gain = 0.2;                 ///< the periodic servo (MixedControl): gain
+  double servo_max_strain_rate = 3.0;      ///< [1/s] and largest rate
+};
+
 /// The critical time step of `law` for a sphere of `radius` and `density` (the wall-box engine's).
 double rve_critical_time_step(const dem::ContactModel &law, double radius, double density);
 
+/// The RVE's time step: `time_step_safety` times the critical step of the smallest placed sphere.
+double rve_time_step(const RveGrains &grains);
+
+/// Step 3's compression of a cell whose friction is on: the protocol's servo and criteria.
+dem::CompressionResult compress_rve(dem::PeriodicCell &cell, double pressure, const RveProtocol &protocol = {});
+
 /// Places, grows and compresses; throws std::runtime_error naming the stage that failed.
-dem::PeriodicCell prepare_rve(const RveGrains &grains, const RvePreparationSettings &s);
+dem::PeriodicCell prepare_rve(const RveGrains &grains, const RvePreparationSettings &s,
+                              const RveProtocol &protocol = {});
 
 } // namespace geocomp::coupled

@@ -31,18 +31,6 @@ Vec3 box_lengths(const DemSystem &s)
   return L;
 }
 
-/// Mean wall stress, compression positive: sum over the six walls of |F . n| / area, / 6.
-double mean_wall_pressure(const DemSystem &s)
-{
-  const Vec3 L = box_lengths(s);
-  double p = 0.0;
-  for (int w = 0; w < 6; ++w) {
-    const int a = w / 2;
-    p += -s.wall(w).force.dot(s.wall(w).normal) / (L[(a + 1) % 3] * L[(a + 2) % 3]);
-  }
-  return p / 6.0;
-}
-
 /// The case's contact law with mu_s = mu_p = 0 (S0: frictionless while the packing forms)
 /// and without S3's parts: bonds, adhesion and the anchor-spring friction act from the
 /// prepared state, when the program first evaluates the case's law (S3: anchors fixed at t_0
@@ -222,6 +210,17 @@ void check_specimen(const DemCase &c)
     growth_target(c);
   else
     read_case_packing(c);
+}
+
+double mean_wall_pressure(const DemSystem &s)
+{
+  const Vec3 L = box_lengths(s);
+  double p = 0.0;
+  for (int w = 0; w < 6; ++w) {
+    const int a = w / 2;
+    p += -s.wall(w).force.dot(s.wall(w).normal) / (L[(a + 1) % 3] * L[(a + 2) % 3]);
+  }
+  return p / 6.0;
 }
 
 double packing_fraction(const DemSystem &system)

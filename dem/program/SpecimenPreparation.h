@@ -140,4 +140,8 @@ GrownPacking grow_packing(const DemCase &c, const PreparationCriteria &criteria,
 /// Nominal packing fraction sum 4/3 pi R^3 / box volume (walls 0..5 of add_box()).
 double packing_fraction(const DemSystem &system);
 
+/// Mean wall stress, compression positive: sum over the six walls (0..5 of add_box()) of
+/// |F . n| / current face area, divided by six.
+double mean_wall_pressure(const DemSystem &system);
+
 } // namespace geocomp::dem
