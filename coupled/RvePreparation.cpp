@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace geocomp::coupled {
 
@@ -33,6 +34,17 @@ dem::CompressionResult compress_rve(dem::PeriodicCell &cell, double pressure, co
   return dem::compress_isotropic(cell, iso);
 }
 
+dem::PeriodicCell at_placed_radii(const dem::PeriodicCell &grown, const std::vector<double> &placed, double density)
+{
+  if (placed.size() != grown.n_particles() || placed.empty())
+    throw std::invalid_argument("at_placed_radii: one placed radius per sphere of the grown cell");
+  const double scale = placed[0] / grown.particles().radius[0]; // the growth multiplied every radius alike
+  dem::PeriodicCell cell(dem::CellMatrix(scale * grown.cell().h()), grown.contact_model(), grown.parameters());
+  for (std::size_t i = 0; i < placed.size(); ++i)
+    cell.add_sphere(scale * grown.position(dem::Index(i)), placed[i], density);
+  return cell;
+}
+
 dem::PeriodicCell prepare_rve(const RveGrains &g, const RvePreparationSettings &s, const RveProtocol &k)
 {
   dem::RandomPlacement place;
@@ -47,6 +59,7 @@ dem::PeriodicCell prepare_rve(const RveGrains &g, const RvePreparationSettings &
   cp.friction = 0.0;
   cp.local_damping = s.local_damping;
   dem::PeriodicCell cell = dem::place_spheres(place, g.law, cp);
+  const std::vector<double> placed = cell.particles().radius;
 
   dem::RadiusGrowth growth;
   growth.pressure = k.growth_pressure_fraction * s.pressure;
@@ -59,6 +72,7 @@ dem::PeriodicCell prepare_rve(const RveGrains &g, const RvePreparationSettings &
                              " Pa in " + std::to_string(grown.steps) + " steps");
   cp.friction = g.friction;
   cell.set_parameters(cp);
+  cell = at_placed_radii(cell, placed, g.density);
   const dem::CompressionResult compressed = compress_rve(cell, s.pressure, k);
   if (!compressed.converged)
     throw std::runtime_error("dem rve: the isotropic compression to " + std::to_string(s.pressure) +

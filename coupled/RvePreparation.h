@@ -8,20 +8,25 @@
 // (dem/periodic/PeriodicPreparation.h, PeriodicProgram.h):
 //  1. random sequential placement at the packing fraction eta_0 (radii uniform in R(1 +- a));
 //  2. frictionless radius growth at fixed cell (2e-5 per step) to a tenth of the pressure,
-//     with local damping;
+//     with local damping; the growth multiplies every radius by the same g (measured on the
+//     biaxial case's grains, R = 1 mm, k_n = 1e5 N/m, 100 kPa, eta_0 = 0.3: g = 1.24), so
+//  2b. the grown packing is scaled back by 1/g - cell matrix and positions divided by g, the
+//     radii the placement's R(1 +- a) again, at rest: the same geometry at the case's grain
+//     size, its overlaps divided by g (the stress of linear springs, F l / V ~ k_n delta / l^2,
+//     times g: about p/8);
 //  3. friction on, servo isotropic compression to the pressure (gain 0.2, largest rate 3/s;
 //     done at 1 % on every stress component and an unbalanced-force ratio of 0.02).
 // Time step: the wall-box engine's, `time step safety` times the critical step of the
-// contact law for the smallest sphere (DemSystem::critical_time_step).
-// The radii R(1 +- a) are the placement's: the growth multiplies them until the cell carries
-// p/10, and no target radius ends it. Measured on the biaxial case's grains (R = 1 mm,
-// k_n = 1e5 N/m, 100 kPa, eta_0 = 0.3): by 1.24, a mean diameter of 2.48 mm (docs/coupled.md,
-// the RVE against the wall-bounded specimen).
+// contact law for the smallest sphere (DemSystem::critical_time_step) - of the placed radii,
+// which the cell has again from step 2b on.
+// Before step 2b (until 2026-12-01) the cells kept the grown radii: a mean diameter of
+// 2.48 mm for the case's 2 mm (docs/coupled.md, the RVE against the wall-bounded specimen).
 #include "dem/ContactLaw.h"
 #include "dem/periodic/PeriodicCell.h"
 #include "dem/periodic/PeriodicProgram.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace geocomp::coupled {
 
@@ -68,7 +73,12 @@ double rve_time_step(const RveGrains &grains);
 /// Step 3's compression of a cell whose friction is on: the protocol's servo and criteria.
 dem::CompressionResult compress_rve(dem::PeriodicCell &cell, double pressure, const RveProtocol &protocol = {});
 
-/// Places, grows and compresses; throws std::runtime_error naming the stage that failed.
+/// Step 2b: `grown` scaled by placed / grown radius (the same for every sphere after a radius
+/// growth), its spheres at the `placed` radii, at rest, with its law and parameters.
+dem::PeriodicCell at_placed_radii(const dem::PeriodicCell &grown, const std::vector<double> &placed, double density);
+
+/// Places, grows, scales back to the placed radii and compresses; throws std::runtime_error
+/// naming the stage that failed.
 dem::PeriodicCell prepare_rve(const RveGrains &grains, const RvePreparationSettings &s,
                               const RveProtocol &protocol = {});
 

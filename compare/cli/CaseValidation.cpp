@@ -19,7 +19,7 @@ void validate_engine(const std::string &name, const CaseDescription &c)
   if (name == "fem-dem") { // the cube of the continuum section, the RVE of section 'dem rve'
     try {
       coupled::rve_grains(c);
-      continuum::check_cube_parameters(cube_parameters(c, ""));
+      continuum::check_cube_parameters(fem_dem_cube_parameters(c, ""));
     } catch (const std::invalid_argument &e) {
       throw CaseError(c.file, "dem rve", e.what());
     }

@@ -114,6 +114,7 @@ continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::s
   p.side = box_size(c.specimen);
   p.cells_per_side = c.continuum.cells_per_edge;
   p.threads = c.continuum.threads;
+  p.verbose = log::verbosity() == log::Verbosity::verbose; // -v: the Newton log of the FE engines too
   for (std::size_t a = 0; a < c.continuum.box_edges.size() && a < 3; ++a)
     p.box_edges[a] = c.continuum.box_edges[a];
   for (std::size_t a = 0; a < c.continuum.box_cells.size() && a < 3; ++a)
@@ -138,6 +139,23 @@ continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::s
   return p;
 }
 
+// The fem-dem engine's Newton (docs/coupled.md, "Newton with the cells"): the cells' answer
+// has a floor of about 1e-3 of the load near the peak (500-sphere cells), so the tolerance is
+// `dem rve`'s and a step that stalls below twice it is accepted (counted in relaxed_steps);
+// BFGS pairs on the contact-stiffness tangent, which plateau for a few iterations before they
+// drop (a step is cut back after 5 iterations without halving |R|, not 3); two halvings of
+// the line search (a quarter step is as far as the cells' answer resolves a direction).
+continuum::CubeParameters fem_dem_cube_parameters(const CaseDescription &c, const std::string &output_dir)
+{
+  continuum::CubeParameters p = cube_parameters(c, output_dir, "fem-dem-fields");
+  p.newton_tolerance = c.rve.newton_tolerance;
+  p.newton_stagnation_factor = 2.0;
+  p.secant_pairs = c.rve.secant_pairs;
+  p.stall_iterations = 5;
+  p.line_search_steps = 2;
+  return p;
+}
+
 std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDescription &c,
                                            const std::string &output_dir, MPI_Comm communicator)
 {
@@ -149,7 +167,7 @@ std::unique_ptr<LoadingEngine> make_engine(const std::string &name, const CaseDe
     log::info("fem-dem: preparing the RVE of every quadrature point (" + std::to_string(c.rve.particles) +
               " spheres)");
     auto rves = std::make_shared<coupled::RveMaterialFactory>(coupled::make_rve_material(c, c.rve));
-    return std::make_unique<continuum::CubeEngine>(cube_parameters(c, output_dir, "fem-dem-fields"), std::move(rves),
+    return std::make_unique<continuum::CubeEngine>(fem_dem_cube_parameters(c, output_dir), std::move(rves),
                                                    communicator);
   }
   if (name == "continuum")

@@ -42,6 +42,9 @@ continuum::MaterialPointParameters material_point_parameters(const CaseDescripti
 /// `<output_dir>/<fields_folder>` (continuum-fields, fem-dem-fields) when output/fields is on.
 continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::string &output_dir,
                                           const std::string &fields_folder = "continuum-fields");
+/// The fem-dem engine's cube: cube_parameters with the Newton of the cells' answer (the
+/// tolerance and secant pairs of section `dem rve`, docs/coupled.md).
+continuum::CubeParameters fem_dem_cube_parameters(const CaseDescription &c, const std::string &output_dir);
 
 /// File name of an engine's results inside the output folder.
 std::string results_file(const std::string &engine);

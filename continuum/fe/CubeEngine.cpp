@@ -2,6 +2,7 @@
 // measurement, save/restore. The model and the method are described in CubeEngine.h;
 // the choices (walls, reactions, crack band) and measured behaviour in docs/continuum-fe.md.
 #include "continuum/fe/CubeEngineImpl.h"
+#include "continuum/fe/SecantPairs.h"
 #include "continuum/fe/RigidBodyModes.h"
 #include "continuum/models/Mandel.h"
 #include "continuum/models/PointStateModel.h"
@@ -103,8 +104,8 @@ void check_parameters(const CubeParameters &p)
     fail("newton stagnation factor", "must be >= 0, with factor * newton tolerance < 1");
   if (p.threads < 1 || p.threads > 1024)
     fail("threads", "must be in 1..1024");
-  if (p.max_newton_iterations < 1 || p.steps_per_advance < 1)
-    fail("max newton iterations / steps per advance", "must be >= 1");
+  if (p.max_newton_iterations < 1 || p.steps_per_advance < 1 || p.stall_iterations < 1)
+    fail("max newton iterations / steps per advance / stall iterations", "must be >= 1");
   if (!(p.imperfection_radius >= 0.0))
     fail("imperfection radius", "must be >= 0");
   if (!(p.imperfection_cohesion_factor > 0.0 && p.imperfection_cohesion_factor <= 1.0))
@@ -788,6 +789,8 @@ bool CubeEngine::Impl::solve_step(double t)
 
   unsigned iterations = 1;
   double r = assemble(t, false, false), previous = std::numeric_limits<double>::infinity();
+  const bool quasi_newton = prm.secant_pairs > 0;
+  SecantPairs<LA::MPI::Vector> pairs(prm.secant_pairs);
   while (true) {
     const double rel = r / residual_scale;
     stats.last_step_residuals.push_back(rel);
@@ -806,14 +809,18 @@ bool CubeEngine::Impl::solve_step(double t)
       break;
     }
     previous = rel;
-    // A step whose last three iterations have not halved the residual is cut back at once:
-    // it stalls at a floor (loading/unloading switches near a bifurcation) that the
-    // remaining iterations do not lower, and a smaller step is the cheaper remedy.
+    // A step whose last `stall_iterations` iterations have not halved the residual is cut
+    // back at once: it stalls at a floor (loading/unloading switches near a bifurcation)
+    // that the remaining iterations do not lower, and a smaller step is the cheaper remedy.
     const auto &h = stats.last_step_residuals;
-    if (iterations >= prm.max_newton_iterations || (h.size() >= 4 && rel > 0.5 * h[h.size() - 4]))
+    const std::size_t window = prm.stall_iterations;
+    if (iterations >= prm.max_newton_iterations || (h.size() > window && rel > 0.5 * h[h.size() - 1 - window]))
       return false;
     ++iterations;
-    assemble(t, true, false);
+    // The tangent of every iterate (Newton), or of the step's first corrector only, its
+    // pairs then updating the step (BFGS, SecantPairs.h).
+    if (!quasi_newton || iterations == 2)
+      assemble(t, true, false);
     try {
       // Inexact Newton (Eisenstat-Walker type forcing): the Krylov reduction follows the
       // Newton residual, eta = 0.1 |R|/F, which keeps the quadratic rate
@@ -822,14 +829,27 @@ bool CubeEngine::Impl::solve_step(double t)
       // so eta >= 0.1 tol / (|R|/F); eta within [linear_tolerance, 1e-3].
       const double rel = r / residual_scale;
       const double eta =
-        std::max(std::min(0.1 * rel, 1e-3), std::min(0.1 * prm.newton_tolerance / rel, 1e-3));
-      solve_linear(std::clamp(eta, prm.linear_tolerance, 1e-3));
+        std::clamp(std::max(std::min(0.1 * rel, 1e-3), std::min(0.1 * prm.newton_tolerance / rel, 1e-3)),
+                   prm.linear_tolerance, 1e-3);
+      if (quasi_newton) {
+        LA::MPI::Vector direction(rhs);
+        pairs.apply(direction, [&](LA::MPI::Vector &w) {
+          const LA::MPI::Vector residual(rhs);
+          rhs = w;
+          solve_linear(eta);
+          w = update;
+          rhs = residual;
+        });
+        update = direction;
+      } else {
+        solve_linear(eta);
+      }
     } catch (const std::exception &e) {
       pcout << "    linear solve failed: " << e.what() << '\n';
       return false;
     }
     constraints.distribute(update);
-    const LA::MPI::Vector base(solution_owned);
+    const LA::MPI::Vector base(solution_owned), base_rhs(rhs);
     double alpha = 1.0, r_trial = 0.0;
     for (unsigned ls = 0;; ++ls) {
       solution_owned = base;
@@ -839,6 +859,14 @@ bool CubeEngine::Impl::solve_step(double t)
       if (r_trial <= (1.0 - 1e-4 * alpha) * r || ls >= prm.line_search_steps)
         break;
       alpha *= 0.5;
+    }
+    if (alpha < 1.0)
+      pcout << "      line search: alpha = " << alpha << '\n';
+    if (quasi_newton && std::isfinite(r_trial)) {
+      LA::MPI::Vector s(update), y(base_rhs);
+      s *= alpha;
+      y -= rhs; // y = R(u + alpha du) - R(u), rhs being -R
+      pairs.add(s, y);
     }
     r = r_trial;
   }

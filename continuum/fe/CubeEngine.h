@@ -105,6 +105,15 @@ struct CubeParameters {
   /// accepted and counted (extra `relaxed_steps`); 0 = never.
   double newton_stagnation_factor = 1e3;
   unsigned max_newton_iterations = 15;
+  /// A step is cut back when its last this many iterations have not halved the residual
+  /// (>= 1): Newton stalling at a floor. Secant pairs may plateau for a few iterations while
+  /// they learn the stiffness, then drop.
+  unsigned stall_iterations = 3;
+  /// 0: Newton with the tangent of every iterate (the consistent tangent of the plasticity
+  /// models). m > 0: the tangent of the step's first corrector iteration only, updated by the
+  /// BFGS pairs of the step's iterations, at most m of them (SecantPairs.h: for a material
+  /// whose tangent is approximate, a DEM cell per point).
+  unsigned secant_pairs = 0;
   unsigned line_search_steps = 6;   ///< halvings of the Newton step (0 = full steps)
   unsigned steps_per_advance = 2;   ///< load steps per sample interval (initial size)
   unsigned max_cutbacks = 10;       ///< halvings of a load step before giving up

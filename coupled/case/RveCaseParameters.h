@@ -1,6 +1,6 @@
 #pragma once
-// The `dem rve` section of a case file (continuum/model = dem rve), as plain data: how the
-// RVE of every quadrature point is made and driven. Its grains and its state are the DEM
+// The `dem rve` section of a case file (the fem-dem engine), as plain data: how the RVE of
+// every quadrature point is made and driven, and how the engine's Newton treats its answer. Its grains and its state are the DEM
 // specimen's (specimen: radius, radius spread, density, isotropic pressure; contact: the law
 // and the particle friction; dem: the time step safety), so they are not repeated here (one
 // home per parameter).
@@ -15,6 +15,8 @@ struct RveCaseParameters {
   double placement_packing_fraction = 0.3; ///< eta_0 of the random placement
   double local_damping = 0.2;             ///< Cundall damping of the cell
   unsigned int steps_per_increment = 200; ///< DEM steps per FE strain increment
+  double newton_tolerance = 1e-3;         ///< of the fem-dem engine's cube (relative |R|)
+  unsigned int secant_pairs = 8;          ///< BFGS pairs per load step on the cells' tangent
 
   template <class Self, class V>
   static void visit(Self &p, V &&v)
@@ -24,6 +26,8 @@ struct RveCaseParameters {
     v("placement packing fraction", p.placement_packing_fraction);
     v("local damping", p.local_damping);
     v("steps per increment", p.steps_per_increment);
+    v("newton tolerance", p.newton_tolerance);
+    v("secant pairs", p.secant_pairs);
   }
 };
 
