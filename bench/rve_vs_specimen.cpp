@@ -152,7 +152,8 @@ int main(int argc, char **argv)
       const double prep = seconds_since(t0);
       std::ostringstream p;
       p << "# preparation growth_steps=" << w.record.growth_steps << " grown_packing_fraction=" << w.record.grown_packing_fraction
-        << " grown_pressure=" << w.record.grown_pressure << " compression_steps=" << w.record.compression_steps
+        << " grown_pressure=" << w.record.grown_pressure << " growth_factor=" << w.record.growth_factor
+        << " compression_steps=" << w.record.compression_steps
         << " stress_error=" << w.record.stress_error << " unbalanced=" << w.record.unbalanced << "\n";
       if (cell) {
         t0 = std::chrono::steady_clock::now();

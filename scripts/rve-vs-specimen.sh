@@ -7,7 +7,7 @@
 #
 # Usage: scripts/rve-vs-specimen.sh [output dir]      (default results/rve-vs-specimen)
 # A run whose file exists is not run again (delete it, or the folder, to redo it); so an
-# interrupted comparison continues where it stopped. About 35 min of one core in all.
+# interrupted comparison continues where it stopped. About 22 min of one core in all.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-results/rve-vs-specimen}

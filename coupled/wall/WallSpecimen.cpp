@@ -15,14 +15,20 @@ namespace geocomp::coupled {
 
 namespace {
 
-/// Step 1: the placed spheres, at rest, in their fixed frictionless box.
-dem::DemSystem placed_specimen(const RveGrains &g, const RvePreparationSettings &s, int threads)
+/// Step 1's radii R_i: uniform in R(1 +- a), drawn from the seed.
+std::vector<double> drawn_radii(const RveGrains &g, const RvePreparationSettings &s)
 {
   dem::SizeDistribution sizes;
   sizes.kind = g.radius_spread > 0.0 ? dem::SizeDistribution::Kind::Uniform : dem::SizeDistribution::Kind::Monodisperse;
   sizes.mean_radius = g.radius;
   sizes.spread = g.radius_spread;
-  const std::vector<double> radii = sizes.sample(s.particles, s.seed);
+  return sizes.sample(s.particles, s.seed);
+}
+
+/// Step 1: the spheres of `radii`, placed at f_0 times them, at rest, in their fixed frictionless box.
+dem::DemSystem placed_specimen(const RveGrains &g, const RvePreparationSettings &s, const std::vector<double> &radii,
+                               int threads)
+{
   double solid = 0.0, diameter = 0.0;
   for (double r : radii) {
     solid += 4.0 / 3.0 * M_PI * r * r * r;
@@ -80,11 +86,31 @@ WallPreparation grow_to_pressure(dem::DemSystem &system, double pressure, const 
 
 } // namespace
 
+double at_case_radii(dem::DemSystem &grown, const std::vector<double> &radii)
+{
+  if (radii.size() != grown.n_particles() || radii.empty())
+    throw std::invalid_argument("at_case_radii: one radius per sphere of the grown specimen");
+  const double g = grown.particles().radius[grown.index_of(0)] / radii[0];
+  for (std::size_t w = 0; w < grown.n_walls(); ++w) {
+    grown.set_wall_position(w, grown.wall(w).point / g);
+    grown.set_wall_velocity(w, dem::Vec3::Zero());
+  }
+  for (dem::ParticleId id = 0; id < grown.n_particles(); ++id) {
+    grown.set_position(id, grown.position(id) / g);
+    grown.set_velocity(id, dem::Vec3::Zero());
+    grown.set_angular_velocity(id, dem::Vec3::Zero());
+  }
+  grown.set_radii(radii);
+  return g;
+}
+
 WallSpecimen prepare_wall_specimen(const RveGrains &g, const RvePreparationSettings &s, const RveProtocol &k,
                                    int threads)
 {
-  dem::DemSystem system = placed_specimen(g, s, threads);
+  const std::vector<double> radii = drawn_radii(g, s);
+  dem::DemSystem system = placed_specimen(g, s, radii, threads);
   WallPreparation rec = grow_to_pressure(system, k.growth_pressure_fraction * s.pressure, k);
+  rec.growth_factor = at_case_radii(system, radii);
 
   system.set_friction(g.friction);
   dem::DemEngineParameters servo = dem::DemEngineParameters::from_case(dem::DemParameters{});

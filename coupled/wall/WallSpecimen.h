@@ -15,9 +15,14 @@
 //     placement of 1 000 spheres jams); the growth makes up $f_0$ in a gas, before anything touches;
 //  2. frictionless growth at fixed walls: every `growth_interval` steps all radii are
 //     multiplied by $1 + r\,\Delta n$ (RveProtocol::growth_rate r), until the mean wall
-//     pressure reaches `growth_pressure_fraction` of p (the RVE: its mean stress);
-//  3. friction on (walls stay frictionless), the motion kept, and servo isotropic compression
-//     by the walls (hold_isotropic, the wall box's servo) until every wall stress is within
+//     pressure reaches `growth_pressure_fraction` of p (the RVE: its mean stress); the growth
+//     multiplies every radius R_i by the same g (f_0 made up included: 1.22 at 5 000 spheres
+//     of the biaxial case's grains, 1.21 at 1 000), so
+//  2b. the grown specimen is scaled back by 1/g about the box origin, as the RVE is
+//     (at_placed_radii): the six walls' points and the positions divided by g, the radii the
+//     drawn R_i (masses at the grains' density), at rest (at_case_radii);
+//  3. friction on (walls stay frictionless), and servo isotropic compression by the walls
+//     (hold_isotropic, the wall box's servo) until every wall stress is within
 //     `stress_tolerance` of -p and the unbalanced-force ratio at most `unbalanced`, checked
 //     every `compression_check_interval` steps.
 // The time step is the RVE's (rve_time_step, from the RVE's smallest sphere), and Cundall local
@@ -27,6 +32,7 @@
 #include "dem/DemSystem.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace geocomp::coupled {
 
@@ -35,6 +41,7 @@ struct WallPreparation {
   std::uint64_t growth_steps = 0;
   double grown_packing_fraction = 0.0;   ///< nominal, box volume, at the end of growth
   double grown_pressure = 0.0;           ///< [Pa] mean wall stress, compression positive
+  double growth_factor = 0.0;            ///< g: the grown radii over the drawn R_i (step 2b divides by it)
   std::uint64_t compression_steps = 0;
   double stress_error = 0.0;             ///< largest |sigma_aa + p| / p at the end
   double unbalanced = 0.0;               ///< unbalanced-force ratio at the end
@@ -44,6 +51,12 @@ struct WallSpecimen {
   dem::DemSystem system;  ///< walls 0..5 the box faces (add_box order), at rest, at p
   WallPreparation record;
 };
+
+/// Step 2b: `grown` (no clumps) scaled about the origin, the box's corner, by 1/g with
+/// g = its radius over radii[0] (the same for every sphere after a radius growth): walls'
+/// points and positions divided by g, the spheres at `radii[id]` at their density, particles
+/// and walls at rest. Returns g.
+double at_case_radii(dem::DemSystem &grown, const std::vector<double> &radii);
 
 /// The grains in their box, made by the RVE's protocol; `threads` of the DEM step (the bits
 /// do not depend on it). Throws std::runtime_error naming the stage that did not converge.

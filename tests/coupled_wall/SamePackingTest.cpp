@@ -15,6 +15,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <vector>
 
 using namespace geocomp;
 using namespace geocomp::coupled;
@@ -65,11 +67,44 @@ dem::Vec3 wall_pressures(const dem::DemSystem &s)
 
 } // namespace
 
+// Step 2b on two grown spheres in a box with a corner at the origin: the same geometry at
+// the drawn radii, masses at the density, nothing moving.
+TEST(WallSpecimen, AtTheCaseRadiiTheGrownSpecimenIsScaledAboutTheBoxOriginAndAtRest)
+{
+  const double g = 1.24, rho = 2650.0, L = 10e-3;
+  const std::vector<double> radii = {1e-3, 0.8e-3};
+  dem::DemSystem s;
+  s.add_box(dem::Vec3::Zero(), dem::Vec3::Constant(L), 0.0);
+  s.add_sphere(dem::Vec3(3e-3, 4e-3, 5e-3), g * radii[0], rho, dem::Vec3(0.1, 0.0, 0.0), dem::Vec3(0.0, 2.0, 0.0));
+  s.add_sphere(dem::Vec3(5.2e-3, 4e-3, 5e-3), g * radii[1], rho, dem::Vec3(0.0, -0.2, 0.0));
+  s.set_contact_model(biaxial_case_grains().law);
+  s.set_wall_velocity(1, dem::Vec3(-0.01, 0.0, 0.0));
+  EXPECT_NEAR(at_case_radii(s, radii), g, 1e-15);
+  for (std::size_t w = 0; w < 6; ++w) {
+    EXPECT_NEAR((s.wall(w).point - dem::Vec3::Constant(w % 2 ? L / g : 0.0)).dot(s.wall(w).normal), 0.0, 1e-17) << w;
+    EXPECT_EQ(s.wall(w).velocity, dem::Vec3::Zero()) << w;
+  }
+  EXPECT_NEAR((s.position(0) - dem::Vec3(3e-3, 4e-3, 5e-3) / g).norm(), 0.0, 1e-17);
+  EXPECT_NEAR((s.position(1) - dem::Vec3(5.2e-3, 4e-3, 5e-3) / g).norm(), 0.0, 1e-17);
+  for (dem::ParticleId id = 0; id < 2; ++id) {
+    const dem::Index i = s.index_of(id);
+    EXPECT_EQ(s.particles().radius[i], radii[id]);
+    EXPECT_NEAR(s.particles().mass[i], 4.0 / 3.0 * M_PI * std::pow(radii[id], 3) * rho, 1e-12 * s.particles().mass[i]);
+    EXPECT_EQ(s.velocity(id), dem::Vec3::Zero());
+    EXPECT_EQ(s.angular_velocity(id), dem::Vec3::Zero());
+  }
+  // The overlap scales with the geometry: 1.8 mm g - 2.2 mm = 0.032 mm grown, that over g now.
+  s.evaluate_forces();
+  EXPECT_NEAR(s.contacts().at(0).overlap, (1.8e-3 * g - 2.2e-3) / g, 1e-15);
+  EXPECT_THROW(at_case_radii(s, {1e-3}), std::invalid_argument);
+}
+
 // A 1 000-sphere specimen (inner box 2 d inside the walls) against two 500-sphere RVEs
-// (seeds 1, 2): measured phi 0.589 against 0.586, Z 4.84 against 4.67. In the comparison
-// (docs/coupled.md): ten RVEs phi 0.581-0.591, Z 4.45-4.80; the interiors of six 5 000-sphere
-// wall specimens 0.593-0.598, Z 4.71-4.87. It fails for a protocol that differs: the same
-// growth ten times slower (2e-6 per step) gives an interior of phi 0.616, Z 5.70 (checked),
+// (seeds 1, 2): measured phi 0.586 against 0.582, Z 4.70 against 4.60, d 2.008 and 2.005 mm
+// (without the box's step 2b, 2.42 mm: checked). In the comparison (docs/coupled.md): ten RVEs
+// phi 0.577-0.586, Z 4.48-4.68; the interiors of six 5 000-sphere wall specimens 0.589-0.594,
+// Z 4.66-4.83. It fails for a protocol that differs: the same growth ten times slower (2e-6
+// per step) gives an interior of phi 0.615, Z 5.62 (checked),
 // and the wall box's own preparation (docs/specimens.md: frictionless growth of R = 1 mm
 // grains to eta = 0.572 at fixed walls, rest, friction, consolidation) an interior of 0.625.
 TEST(WallSpecimen, MadeByTheRvesProtocolItsInteriorHasTheRvesPackingFractionAndCoordination)
@@ -89,8 +124,9 @@ TEST(WallSpecimen, MadeByTheRvesProtocolItsInteriorHasTheRvesPackingFractionAndC
   const dem::Vec3 p = wall_pressures(w.system);
   for (int a = 0; a < 3; ++a)
     EXPECT_NEAR(p[a], 1e5, 0.01e5) << "axis " << a;
-  // The same grains: the growth ends where the packing carries p/10, so the sizes agree.
-  EXPECT_NEAR(wall.mean_diameter, d, 0.04 * d);
+  // The same grains, the case's: step 2b takes both back to the drawn R(1 +- a), d = 2 R.
+  EXPECT_NEAR(wall.mean_diameter, 2.0 * g.radius, 0.01 * 2.0 * g.radius);
+  EXPECT_NEAR(d, 2.0 * g.radius, 0.01 * 2.0 * g.radius);
   // The same state inside; the walls' layers loosen the whole box.
   EXPECT_NEAR(wall.inner_packing_fraction, phi, 0.015);
   EXPECT_NEAR(wall.inner_coordination, z, 0.45);
