@@ -140,11 +140,12 @@ continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::s
 }
 
 // The fem-dem engine's Newton (docs/coupled.md, "Newton with the cells"): the cells' answer
-// has a floor of about 1e-3 of the load near the peak (500-sphere cells), so the tolerance is
-// `dem rve`'s and a step that stalls below twice it is accepted (counted in relaxed_steps);
-// BFGS pairs on the contact-stiffness tangent, which plateau for a few iterations before they
-// drop (a step is cut back after 5 iterations without halving |R|, not 3); two halvings of
-// the line search (a quarter step is as far as the cells' answer resolves a direction).
+// has a floor of about 2e-3 of the load past the peak (500-sphere cells: their grains'
+// fluctuation), so the tolerance is `dem rve`'s and a step that stalls below twice it is
+// accepted (counted in relaxed_steps); BFGS pairs on the contact-stiffness tangent, which
+// plateau for a few iterations before they drop (a step is cut back after 5 iterations
+// without halving |R|, not 3); two halvings of the line search (a quarter step is as far as
+// the cells' answer resolves a direction), after which no descent ends the step.
 continuum::CubeParameters fem_dem_cube_parameters(const CaseDescription &c, const std::string &output_dir)
 {
   continuum::CubeParameters p = cube_parameters(c, output_dir, "fem-dem-fields");

@@ -699,6 +699,8 @@ FiniteStrainUpdate CubeEngine::Impl::finite_update(QuadraturePointData &d, const
 double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)
 {
   Timer timer;
+  if (!with_matrix)
+    ++stats.residual_assemblies;
   update_points_ahead();
   CellTerms terms(*this, with_matrix);
   if (with_matrix)
@@ -791,6 +793,7 @@ bool CubeEngine::Impl::solve_step(double t)
   double r = assemble(t, false, false), previous = std::numeric_limits<double>::infinity();
   const bool quasi_newton = prm.secant_pairs > 0;
   SecantPairs<LA::MPI::Vector> pairs(prm.secant_pairs);
+  bool no_descent = false;
   while (true) {
     const double rel = r / residual_scale;
     stats.last_step_residuals.push_back(rel);
@@ -808,6 +811,11 @@ bool CubeEngine::Impl::solve_step(double t)
       ++stats.relaxed_steps;
       break;
     }
+    // With secant pairs, a line search that lowered |R| at no step length has found the floor
+    // of the material's answer (a DEM cell's: its grains' fluctuation): above the stagnation
+    // tolerance the step is cut back rather than iterated further from a worse iterate.
+    if (no_descent)
+      return false;
     previous = rel;
     // A step whose last `stall_iterations` iterations have not halved the residual is cut
     // back at once: it stalls at a floor (loading/unloading switches near a bifurcation)
@@ -862,6 +870,7 @@ bool CubeEngine::Impl::solve_step(double t)
     }
     if (alpha < 1.0)
       pcout << "      line search: alpha = " << alpha << '\n';
+    no_descent = quasi_newton && !(r_trial < r);
     if (quasi_newton && std::isfinite(r_trial)) {
       LA::MPI::Vector s(update), y(base_rhs);
       s *= alpha;

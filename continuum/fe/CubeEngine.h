@@ -155,6 +155,8 @@ struct CubeStatistics {
   /// Material updates of quadrature points computed (not taken from a point's memo), total:
   /// the cost measure of a material that is expensive per point (an RVE).
   unsigned long material_updates = 0;
+  /// Assembly passes of the residual alone (the iterates and line-search trials), total.
+  unsigned long residual_assemblies = 0;
   double assembly_seconds = 0.0, solve_seconds = 0.0, total_seconds = 0.0;
   /// Residual history |R|/scale of the last converged step (for convergence-rate tests).
   std::vector<double> last_step_residuals;

@@ -15,7 +15,7 @@ struct RveCaseParameters {
   double placement_packing_fraction = 0.3; ///< eta_0 of the random placement
   double local_damping = 0.2;             ///< Cundall damping of the cell
   unsigned int steps_per_increment = 200; ///< DEM steps per FE strain increment
-  double newton_tolerance = 1e-3;         ///< of the fem-dem engine's cube (relative |R|)
+  double newton_tolerance = 2e-3;         ///< of the fem-dem engine's cube (relative |R|)
   unsigned int secant_pairs = 8;          ///< BFGS pairs per load step on the cells' tangent
 
   template <class Self, class V>

@@ -26,11 +26,11 @@ void declare_dem_rve(dealii::ParameterHandler &prm)
   prm.declare_entry("steps per increment", "200", Integer(1, 100000000),
                     "DEM steps over which one FE strain increment is applied (L = d eps / (n dt)); sets the "
                     "RVE's strain rate, hence how quasi-static its response is.");
-  prm.declare_entry("newton tolerance", "1e-3", Double(1e-14, 1e-1),
+  prm.declare_entry("newton tolerance", "2e-3", Double(1e-14, 1e-1),
                     "The fem-dem engine's Newton converges when |R_free| <= tolerance * max(|F_int|, |F_ext|) "
                     "(continuum/newton tolerance is the continuum engine's); a step that no longer halves |R| "
                     "below twice the tolerance is accepted (extra relaxed_steps). The cells' answer is not smooth "
-                    "below about 1e-3 of the load once their grains slide (500-sphere cells near the peak; "
+                    "below about 2e-3 of the load once their grains slide (500-sphere cells past the peak; "
                     "docs/coupled.md, 'Newton with the cells'): below that floor a step only stalls and is cut back.");
   prm.declare_entry("secant pairs", "8", Integer(0, 100),
                     "The fem-dem engine's quasi-Newton: the BFGS pairs (Matthies & Strang) of a load step's "

@@ -327,6 +327,31 @@ TEST(CubeEngine, NewtonConvergesQuadraticallyOnPlasticSteps)
   EXPECT_GT(worst_order, 1.7) << "Newton lost its quadratic rate";
 }
 
+// Each point memorizes its last update (CubeEngineImpl.h, Memo): the tangent Newton assembles
+// at the iterate whose residual the line search has just evaluated takes those updates, so a
+// point is updated once per predictor (the committed state of each step tried) and once per
+// residual assembly, never for a tangent. Counted on plastic steps of an imperfect cube,
+// where every step needs correctors (whose tangents would otherwise cost a pass each).
+TEST(CubeEngine, TheTangentAtAnIterateTheLineSearchEvaluatedCostsNoMaterialUpdate)
+{
+  CubeParameters cp = small_cube(4);
+  cp.steps_per_advance = 1;
+  cp.imperfection_radius = 0.3;
+  cp.imperfection_cohesion_factor = 0.8;
+  MohrCoulombParameters m = perfect_mohr_coulomb(E, nu, 20e3, deg(30), deg(5));
+  m.cohesion = PiecewiseLinear({0.0, 0.01}, {20e3, 30e3});
+  CubeEngine engine(cp, make_material_factory({"mohr-coulomb", m, {}, {}}), MPI_COMM_WORLD);
+  const LoadingProgram program = plane_strain(0.006, 0.5);
+  ProgramRunner runner(program, engine);
+  runner.run();
+  const CubeStatistics &st = engine.statistics();
+  const unsigned long points = 4 * 4 * 4 * 8, predictors = st.steps + st.cutbacks;
+  std::printf("steps %u, cut-backs %u, Newton iterations %u, residual assemblies %lu, material updates %lu\n",
+              st.steps, st.cutbacks, st.newton_iterations, st.residual_assemblies, st.material_updates);
+  EXPECT_GT(st.newton_iterations, st.steps + 5); // correctors: tangents at evaluated iterates
+  EXPECT_EQ(st.material_updates, points * (predictors + st.residual_assemblies));
+}
+
 TEST(CubeEngine, BBarKeepsHomogeneousStatesAndNewtonsQuadraticRate)
 {
   // B-bar only replaces the volumetric strain by its cell average, so (1) a homogeneous

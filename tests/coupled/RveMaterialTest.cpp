@@ -224,6 +224,49 @@ TEST(RveMaterial, ATriaxialElementOfRvesConvergesWithTheContactStiffnessTangentA
   }
 }
 
+// The same triaxial element with the BFGS pairs of each step's iterations on the
+// contact-stiffness tangent (continuum/fe/SecantPairs.h, the fem-dem engine's Newton): the
+// same tolerance in fewer iterations, hence fewer RVE runs, and the same stresses to within
+// what the tolerance and the cells' different iterates allow.
+TEST(RveMaterial, SecantPairsReachTheTriaxialElementsToleranceInFewerIterationsAndRveRuns)
+{
+  RveParameters rp;
+  rp.steps_per_increment = 100;
+  const auto rve = std::make_shared<const RveMaterial>(prepared_rve(), rp);
+  Stage stage;
+  stage.name = "triaxial";
+  stage.axes = {{AxisDrive::stress(-pressure), AxisDrive::stress(-pressure), AxisDrive::rate(-5.0e-3)}};
+  struct Run {
+    ResponseSample last;
+    continuum::CubeStatistics stats;
+  };
+  const auto run = [&](unsigned pairs) {
+    continuum::CubeParameters cp = single_element();
+    cp.newton_tolerance = 1e-6;
+    cp.newton_stagnation_factor = 0.0;
+    cp.max_newton_iterations = 40;
+    cp.stall_iterations = 5;
+    cp.secant_pairs = pairs;
+    cp.initial_stress = -pressure;
+    continuum::CubeEngine cube(cp, continuum::fixed_material(rve), MPI_COMM_WORLD);
+    StageControl control;
+    control.stage = &stage;
+    cube.begin_control(control);
+    cube.advance_to(0.25);
+    cube.advance_to(0.5);
+    return Run{cube.measure(), cube.statistics()};
+  };
+  const Run newton = run(0), secant = run(8);
+  std::printf("Newton iterations %u against %u, RVE runs %lu against %lu, cut-backs %u against %u\n",
+              newton.stats.newton_iterations, secant.stats.newton_iterations, newton.stats.material_updates,
+              secant.stats.material_updates, newton.stats.cutbacks, secant.stats.cutbacks);
+  EXPECT_LT(secant.stats.newton_iterations, 0.7 * newton.stats.newton_iterations);
+  EXPECT_LT(secant.stats.material_updates, newton.stats.material_updates);
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(secant.last.stress(a, a), newton.last.stress(a, a), 2e-3 * pressure) << "axis " << a;
+  EXPECT_NEAR(secant.last.stress(0, 0), -pressure, 1e-5 * pressure);
+}
+
 // Finite strain: the single element's Gauss points see F = diag(1 + eps_a) (every axis
 // kinematic, so F is the program's); the stand-alone cell driven by ln(F_k F_{k-1}^-1)/(n dt)
 // per load step is the same RVE, and the element's Cauchy wall stress is its stress.
