@@ -62,7 +62,7 @@ dem::PeriodicCell prepare_rve(const RveGrains &g, const RvePreparationSettings &
   const std::vector<double> placed = cell.particles().radius;
 
   dem::RadiusGrowth growth;
-  growth.pressure = k.growth_pressure_fraction * s.pressure;
+  growth.pressure = s.growth_pressure_fraction * s.pressure;
   growth.rate = k.growth_rate;
   growth.interval = k.growth_interval;
   growth.max_steps = k.growth_max_steps;

@@ -7,7 +7,8 @@
 // column) and carry the case's confining pressure. The route is the periodic cell's
 // (dem/periodic/PeriodicPreparation.h, PeriodicProgram.h):
 //  1. random sequential placement at the packing fraction eta_0 (radii uniform in R(1 +- a));
-//  2. frictionless radius growth at fixed cell (2e-5 per step) to a tenth of the pressure,
+//  2. frictionless radius growth at fixed cell (2e-5 per step) to `growth pressure fraction`
+//     of the pressure (a tenth by default: the density of the packing),
 //     with local damping; the growth multiplies every radius by the same g (measured on the
 //     biaxial case's grains, R = 1 mm, k_n = 1e5 N/m, 100 kPa, eta_0 = 0.3: g = 1.24), so
 //  2b. the grown packing is scaled back by 1/g - cell matrix and positions divided by g, the
@@ -47,6 +48,9 @@ struct RvePreparationSettings {
   double pressure = 1e5;            ///< [Pa], compression positive
   double placement_packing_fraction = 0.3;
   double local_damping = 0.2;       ///< Cundall damping of the cell (growth, compression, loading)
+  /// The frictionless growth ends at this fraction of the pressure (step 2): the packing's
+  /// density - 1 grows it frictionless to p (the densest), 0.1 leaves friction the last 90 %.
+  double growth_pressure_fraction = 0.1;
 };
 
 /// The fixed steps of the preparation (steps 2 and 3 above), in one place: the wall-bounded
@@ -54,7 +58,6 @@ struct RvePreparationSettings {
 struct RveProtocol {
   double growth_rate = 2e-5;               ///< relative radius growth per step
   std::uint64_t growth_interval = 10;      ///< steps between radius updates
-  double growth_pressure_fraction = 0.1;   ///< the growth ends at this fraction of the pressure
   std::uint64_t growth_max_steps = 200000;
   double stress_tolerance = 0.01;          ///< compressed: every stress component within this of p
   double unbalanced = 0.02;                ///< compressed: unbalanced-force ratio at most this

@@ -631,23 +631,10 @@ void CubeEngine::Impl::update_points_ahead()
   std::vector<std::string> errors(points.size());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(prm.threads)
   for (std::size_t k = 0; k < points.size(); ++k) {
-    QuadraturePointData::Memo &memo = points[k]->memo;
-    const QuadraturePointData &d = *points[k];
-    memo.epoch = 0;
-    memo.failed = false;
-    memo.deformation_gradient = gradients[k];
-    memo.strain = strains[k];
     try {
-      if (finite)
-        memo.finite = finite_strain_update(*d.material, gradients[k], d.old_finite);
-      else
-        memo.small = d.material->update(strains[k], d.old_history);
-      memo.epoch = history_epoch;
-    } catch (const ReturnMapFailure &) {
-      memo.failed = true;
-      memo.epoch = history_epoch;
+      memorize(*points[k], gradients[k], strains[k]);
     } catch (const std::exception &e) {
-      errors[k] = e.what(); // no exception leaves an OpenMP region
+      errors[k] = e.what(); // no exception leaves an OpenMP region (the memo stays invalid)
     }
   }
   stats.material_updates += points.size();
@@ -656,44 +643,44 @@ void CubeEngine::Impl::update_points_ahead()
       throw std::runtime_error(e);
 }
 
-MaterialPointUpdate CubeEngine::Impl::small_update(QuadraturePointData &d, const Vector6 &strain)
+void CubeEngine::Impl::memorize(QuadraturePointData &d, const Matrix3 &F, const Vector6 &strain) const
 {
   QuadraturePointData::Memo &memo = d.memo;
-  if (!memo_holds(memo, history_epoch, memo.strain, strain)) {
-    ++stats.material_updates;
-    memo.epoch = 0;
-    memo.strain = strain;
-    memo.failed = false;
-    try {
+  memo.epoch = 0;
+  memo.failed = false;
+  memo.deformation_gradient = F;
+  memo.strain = strain;
+  try {
+    if (prm.kinematics == Kinematics::finite_strain)
+      memo.finite = finite_strain_update(*d.material, F, d.old_finite);
+    else
       memo.small = d.material->update(strain, d.old_history);
-    } catch (const ReturnMapFailure &) {
-      memo.failed = true;
-    }
-    memo.epoch = history_epoch;
+  } catch (const ReturnMapFailure &) {
+    memo.failed = true;
   }
-  if (memo.failed)
+  memo.epoch = history_epoch;
+}
+
+MaterialPointUpdate CubeEngine::Impl::small_update(QuadraturePointData &d, const Vector6 &strain)
+{
+  if (!memo_holds(d.memo, history_epoch, d.memo.strain, strain)) {
+    ++stats.material_updates;
+    memorize(d, Matrix3::Identity(), strain);
+  }
+  if (d.memo.failed)
     throw ReturnMapFailure("the point's material update failed");
-  return memo.small;
+  return d.memo.small;
 }
 
 FiniteStrainUpdate CubeEngine::Impl::finite_update(QuadraturePointData &d, const Matrix3 &F)
 {
-  QuadraturePointData::Memo &memo = d.memo;
-  if (!memo_holds(memo, history_epoch, memo.deformation_gradient, F)) {
+  if (!memo_holds(d.memo, history_epoch, d.memo.deformation_gradient, F)) {
     ++stats.material_updates;
-    memo.epoch = 0;
-    memo.deformation_gradient = F;
-    memo.failed = false;
-    try {
-      memo.finite = finite_strain_update(*d.material, F, d.old_finite);
-    } catch (const ReturnMapFailure &) {
-      memo.failed = true;
-    }
-    memo.epoch = history_epoch;
+    memorize(d, F, Vector6::Zero());
   }
-  if (memo.failed)
+  if (d.memo.failed)
     throw ReturnMapFailure("the point's material update failed");
-  return memo.finite;
+  return d.memo.finite;
 }
 
 double CubeEngine::Impl::assemble(double t, bool with_matrix, bool predictor)

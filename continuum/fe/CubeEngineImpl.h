@@ -106,6 +106,9 @@ struct CubeEngine::Impl {
   /// (threads > 1) into their memos; small_update / finite_update take a point's memo when
   /// its input and committed history are the same and compute (and memorize) otherwise.
   void update_points_ahead();
+  /// Computes the point's update for F (finite strain) or the strain (small) into its memo;
+  /// a ReturnMapFailure is memorized as failed, any other exception leaves it invalid.
+  void memorize(QuadraturePointData &d, const Matrix3 &F, const Vector6 &strain) const;
   MaterialPointUpdate small_update(QuadraturePointData &d, const Vector6 &strain);
   FiniteStrainUpdate finite_update(QuadraturePointData &d, const Matrix3 &F);
   /// Numbers the committed histories: raised whenever the points' committed history changes

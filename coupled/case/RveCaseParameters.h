@@ -14,6 +14,7 @@ struct RveCaseParameters {
   unsigned int seed = 1;                  ///< of the random placement
   double placement_packing_fraction = 0.3; ///< eta_0 of the random placement
   double local_damping = 0.2;             ///< Cundall damping of the cell
+  double growth_pressure_fraction = 0.1;  ///< frictionless growth up to this fraction of p
   unsigned int steps_per_increment = 200; ///< DEM steps per FE strain increment
   double newton_tolerance = 2e-3;         ///< of the fem-dem engine's cube (relative |R|)
   unsigned int secant_pairs = 8;          ///< BFGS pairs per load step on the cells' tangent
@@ -25,6 +26,7 @@ struct RveCaseParameters {
     v("seed", p.seed);
     v("placement packing fraction", p.placement_packing_fraction);
     v("local damping", p.local_damping);
+    v("growth pressure fraction", p.growth_pressure_fraction);
     v("steps per increment", p.steps_per_increment);
     v("newton tolerance", p.newton_tolerance);
     v("secant pairs", p.secant_pairs);

@@ -23,6 +23,12 @@ void declare_dem_rve(dealii::ParameterHandler &prm)
                     "Packing fraction of the random sequential placement before the radius growth.");
   prm.declare_entry("local damping", "0.2", Double(0, 0.99),
                     "Cundall local damping of the RVE's fluctuations (preparation and loading).");
+  prm.declare_entry("growth pressure fraction", "0.1", Double(0.01, 1),
+                    "The preparation's frictionless radius growth ends when the cell carries this fraction of "
+                    "the isotropic pressure; friction then goes on and the servo compresses the cell to the "
+                    "pressure. It sets the packing's density: 1 = grown frictionless to the pressure (the "
+                    "densest, dilatant under shear), 0.1 = the last 90 % of the pressure taken with friction "
+                    "(looser, contractive; docs/coupled.md).");
   prm.declare_entry("steps per increment", "200", Integer(1, 100000000),
                     "DEM steps over which one FE strain increment is applied (L = d eps / (n dt)); sets the "
                     "RVE's strain rate, hence how quasi-static its response is.");
@@ -74,6 +80,7 @@ RvePreparationSettings rve_settings(const dem::DemCase &c, const RveCaseParamete
   s.seed = p.seed;
   s.placement_packing_fraction = p.placement_packing_fraction;
   s.local_damping = p.local_damping;
+  s.growth_pressure_fraction = p.growth_pressure_fraction;
   return s;
 }
 

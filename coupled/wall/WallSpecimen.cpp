@@ -109,7 +109,7 @@ WallSpecimen prepare_wall_specimen(const RveGrains &g, const RvePreparationSetti
 {
   const std::vector<double> radii = drawn_radii(g, s);
   dem::DemSystem system = placed_specimen(g, s, radii, threads);
-  WallPreparation rec = grow_to_pressure(system, k.growth_pressure_fraction * s.pressure, k);
+  WallPreparation rec = grow_to_pressure(system, s.growth_pressure_fraction * s.pressure, k);
   rec.growth_factor = at_case_radii(system, radii);
 
   system.set_friction(g.friction);

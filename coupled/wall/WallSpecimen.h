@@ -15,7 +15,7 @@
 //     placement of 1 000 spheres jams); the growth makes up $f_0$ in a gas, before anything touches;
 //  2. frictionless growth at fixed walls: every `growth_interval` steps all radii are
 //     multiplied by $1 + r\,\Delta n$ (RveProtocol::growth_rate r), until the mean wall
-//     pressure reaches `growth_pressure_fraction` of p (the RVE: its mean stress); the growth
+//     pressure reaches RvePreparationSettings::growth_pressure_fraction of p (the RVE: its mean stress); the growth
 //     multiplies every radius R_i by the same g (f_0 made up included: 1.22 at 5 000 spheres
 //     of the biaxial case's grains, 1.21 at 1 000), so
 //  2b. the grown specimen is scaled back by 1/g about the box origin, as the RVE is

@@ -56,6 +56,27 @@ continuum::CubeParameters single_element()
   return c;
 }
 
+/// Triaxial compression: lateral walls under -p (tractions), the axial wall at -5e-3 /s.
+Stage triaxial_stage()
+{
+  Stage st;
+  st.name = "triaxial";
+  st.axes = {{AxisDrive::stress(-pressure), AxisDrive::stress(-pressure), AxisDrive::rate(-5.0e-3)}};
+  return st;
+}
+
+/// The single element for triaxial compression: every step to 1e-6 (no relaxed acceptance),
+/// the walls starting at the RVE's preparation pressure.
+continuum::CubeParameters triaxial_element()
+{
+  continuum::CubeParameters cp = single_element();
+  cp.newton_tolerance = 1e-6;
+  cp.newton_stagnation_factor = 0.0;
+  cp.max_newton_iterations = 40;
+  cp.initial_stress = -pressure;
+  return cp;
+}
+
 struct CubeRun {
   std::vector<ResponseSample> samples;
   std::unique_ptr<continuum::CubeEngine> cube;
@@ -194,15 +215,8 @@ TEST(RveMaterial, ATriaxialElementOfRvesConvergesWithTheContactStiffnessTangentA
   RveParameters rp;
   rp.steps_per_increment = 100;
   const auto rve = std::make_shared<const RveMaterial>(prepared_rve(), rp);
-  Stage stage;
-  stage.name = "triaxial";
-  stage.axes = {{AxisDrive::stress(-pressure), AxisDrive::stress(-pressure), AxisDrive::rate(-5.0e-3)}};
-  continuum::CubeParameters cp = single_element();
-  cp.newton_tolerance = 1e-6;
-  cp.newton_stagnation_factor = 0.0; // no relaxed acceptance: every step to the tolerance
-  cp.max_newton_iterations = 40;
-  cp.initial_stress = -pressure; // the walls start at the RVE's preparation pressure
-  continuum::CubeEngine cube(cp, continuum::fixed_material(rve), MPI_COMM_WORLD);
+  const Stage stage = triaxial_stage();
+  continuum::CubeEngine cube(triaxial_element(), continuum::fixed_material(rve), MPI_COMM_WORLD);
   StageControl control;
   control.stage = &stage;
   cube.begin_control(control);
@@ -233,21 +247,15 @@ TEST(RveMaterial, SecantPairsReachTheTriaxialElementsToleranceInFewerIterationsA
   RveParameters rp;
   rp.steps_per_increment = 100;
   const auto rve = std::make_shared<const RveMaterial>(prepared_rve(), rp);
-  Stage stage;
-  stage.name = "triaxial";
-  stage.axes = {{AxisDrive::stress(-pressure), AxisDrive::stress(-pressure), AxisDrive::rate(-5.0e-3)}};
+  const Stage stage = triaxial_stage();
   struct Run {
     ResponseSample last;
     continuum::CubeStatistics stats;
   };
   const auto run = [&](unsigned pairs) {
-    continuum::CubeParameters cp = single_element();
-    cp.newton_tolerance = 1e-6;
-    cp.newton_stagnation_factor = 0.0;
-    cp.max_newton_iterations = 40;
+    continuum::CubeParameters cp = triaxial_element();
     cp.stall_iterations = 5;
     cp.secant_pairs = pairs;
-    cp.initial_stress = -pressure;
     continuum::CubeEngine cube(cp, continuum::fixed_material(rve), MPI_COMM_WORLD);
     StageControl control;
     control.stage = &stage;

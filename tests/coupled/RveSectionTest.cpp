@@ -34,10 +34,12 @@ TEST(RveSection, TheSectionIsReadWithItsDefaultsAndTheGivenValues)
 {
   dealii::ParameterHandler prm;
   sections::declare_dem_rve(prm);
-  prm.parse_input_from_string("subsection dem rve\n  set particles = 80\n  set steps per increment = 50\nend\n");
+  prm.parse_input_from_string(
+    "subsection dem rve\n  set particles = 80\n  set steps per increment = 50\n  set growth pressure fraction = 1\nend\n");
   const coupled::RveCaseParameters p = sections::parse_dem_rve(prm, sections::Reader{"test.prm"});
   EXPECT_EQ(p.particles, 80u);
   EXPECT_EQ(p.steps_per_increment, 50u);
+  EXPECT_EQ(p.growth_pressure_fraction, 1.0);
   EXPECT_EQ(p.local_damping, coupled::RveCaseParameters{}.local_damping);
   EXPECT_EQ(p.seed, coupled::RveCaseParameters{}.seed);
 }
@@ -62,6 +64,24 @@ TEST(RveSection, TheCasesGrainsArePreparedToTheSpecimensPressureWithTheWallBoxEn
   for (std::size_t i = 0; i < cell.n_particles(); ++i) {
     EXPECT_GT(cell.particles().radius[i], 0.8e-3 * 0.9) << i; // grown from R(1 +- 0.2)
   }
+}
+
+// The growth fraction sets the density: grown frictionless all the way to p, the grains settle
+// into a denser packing than when friction takes the last 90 % of the pressure (frictional
+// contacts lock the looser arrangement); both cells carry the pressure.
+TEST(RveSection, ACellGrownFrictionlessToTheFullPressureIsDenserThanOneGrownToATenth)
+{
+  const dem::DemCase c = small_grains();
+  coupled::RveCaseParameters p;
+  p.particles = 60;
+  const auto loose = coupled::make_rve_material(c, p);
+  p.growth_pressure_fraction = 1.0;
+  const auto dense = coupled::make_rve_material(c, p);
+  for (const auto *rve : {loose.get(), dense.get()})
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(rve->prepared().stress().elastic(a, a), -c.specimen.isotropic_pressure,
+                  0.011 * c.specimen.isotropic_pressure);
+  EXPECT_GT(dense->prepared().packing_fraction(), loose->prepared().packing_fraction() + 0.01);
 }
 
 TEST(RveSection, ASizeDistributionThePeriodicPlacementDoesNotDrawIsRefused)
