@@ -270,6 +270,7 @@ void CubeEngine::Impl::setup_quadrature_data()
   materials[base] = factory->make(base);
   if (prm.imperfection_radius > 0.0)
     materials[weak] = factory->make(weak);
+  rice_scan = materials[base]->has_plastic_tangent();
   elastic_tangent = materials[base]->elasticity().stiffness();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -905,9 +906,12 @@ void CubeEngine::Impl::revert()
 //
 // Rice's indicator at every plastic quadrature point of the committed state (elastic
 // points have q = 1), the global minimum, and the first time it reaches 0: that point's
-// position and band normal are the onset record.
+// position and band normal are the onset record. A material without a plastic tangent (a
+// point-state model) has nothing to scan: no indicator, no columns (extra_columns()).
 void CubeEngine::Impl::update_localization(double t)
 {
+  if (!rice_scan)
+    return;
   struct {
     double q;
     int rank;
@@ -1054,22 +1058,26 @@ double CubeEngine::element_size() const { return impl_->h_e; }
 
 std::vector<ExtraColumn> CubeEngine::extra_columns() const
 {
-  return {{"newton_iterations", "1", "mean Newton iterations (linear solves) per load step in the last interval"},
-          {"load_steps", "1", "converged load steps in the last interval"},
-          {"cutbacks", "1", "load-step cut-backs in the last interval"},
-          {"relaxed_steps", "1", "load steps accepted at the stagnation tolerance (a table kink) in the last interval"},
-          {"plastic_fraction", "1", "volume fraction of plastic quadrature points"},
-          {"kappa_max", "1", "largest equivalent plastic strain"},
-          {"localization_q", "1", "min over points of min_n det(n.C_ep.n)/det(n.C_e.n) (<= 0 localized)"},
-          {"localization_onset_time", "s", "program time of the first q <= 0 (-1: not yet)"},
-          {"localization_x", "m", "onset point, x"},
-          {"localization_y", "m", "onset point, y"},
-          {"localization_z", "m", "onset point, z"},
-          {"localization_nx", "1", "band normal at onset, x"},
-          {"localization_ny", "1", "band normal at onset, y"},
-          {"localization_nz", "1", "band normal at onset, z"},
-          {"material_updates", "1",
-           "quadrature-point material updates computed in the last interval (FEM x DEM: RVE runs, its cost)"}};
+  std::vector<ExtraColumn> columns{
+    {"newton_iterations", "1", "mean Newton iterations (linear solves) per load step in the last interval"},
+    {"load_steps", "1", "converged load steps in the last interval"},
+    {"cutbacks", "1", "load-step cut-backs in the last interval"},
+    {"relaxed_steps", "1", "load steps accepted at the stagnation tolerance (a table kink) in the last interval"},
+    {"plastic_fraction", "1", "volume fraction of plastic quadrature points"},
+    {"kappa_max", "1", "largest equivalent plastic strain"}};
+  if (impl_->rice_scan)
+    columns.insert(columns.end(),
+                   {{"localization_q", "1", "min over points of min_n det(n.C_ep.n)/det(n.C_e.n) (<= 0 localized)"},
+                    {"localization_onset_time", "s", "program time of the first q <= 0 (-1: not yet)"},
+                    {"localization_x", "m", "onset point, x"},
+                    {"localization_y", "m", "onset point, y"},
+                    {"localization_z", "m", "onset point, z"},
+                    {"localization_nx", "1", "band normal at onset, x"},
+                    {"localization_ny", "1", "band normal at onset, y"},
+                    {"localization_nz", "1", "band normal at onset, z"}});
+  columns.push_back({"material_updates", "1",
+                     "quadrature-point material updates computed in the last interval (FEM x DEM: RVE runs, its cost)"});
+  return columns;
 }
 
 void CubeEngine::begin_control(const StageControl &control)
@@ -1195,16 +1203,11 @@ ResponseSample CubeEngine::measure()
               double(m.interval_cutbacks),
               double(m.interval_relaxed),
               plastic_volume / (m.prm.box_edges.isZero() ? std::pow(m.prm.side, 3) : m.prm.edges().prod()),
-              kappa_max,
-              m.q_min,
-              m.onset_time,
-              m.onset_position[0],
-              m.onset_position[1],
-              m.onset_position[2],
-              m.onset_normal[0],
-              m.onset_normal[1],
-              m.onset_normal[2],
-              double(Utilities::MPI::sum(m.stats.material_updates - m.interval_updates_from, m.comm))};
+              kappa_max};
+  if (m.rice_scan)
+    s.extras.insert(s.extras.end(), {m.q_min, m.onset_time, m.onset_position[0], m.onset_position[1],
+                                     m.onset_position[2], m.onset_normal[0], m.onset_normal[1], m.onset_normal[2]});
+  s.extras.push_back(double(Utilities::MPI::sum(m.stats.material_updates - m.interval_updates_from, m.comm)));
 
   if (!m.prm.output_directory.empty() && m.measure_count % m.prm.output_every == 0)
     m.write_output(m.time);

@@ -190,7 +190,8 @@ struct CubeEngine::Impl {
   double ramp_t0 = 0.0, ramp_t1 = -1.0;
   Vector3 committed_wall_stress = Vector3::Zero();
 
-  // Localization onset.
+  // Localization onset (Rice's indicator: only when the material has a plastic tangent).
+  bool rice_scan = true;
   double onset_time = -1.0;
   Vector3 onset_position = Vector3::Zero(), onset_normal = Vector3::Zero();
   double q_min = 1.0;

@@ -63,7 +63,8 @@ void CubeEngine::Impl::write_output(double t)
     data_out.add_data_vector(stress[m], names[m], DataOut<3>::type_cell_data);
   data_out.add_data_vector(kappa, "kappa", DataOut<3>::type_cell_data);
   data_out.add_data_vector(flag, "state_flag", DataOut<3>::type_cell_data);
-  data_out.add_data_vector(q, "localization_q", DataOut<3>::type_cell_data);
+  if (rice_scan) // a point-state material has no indicator (update_localization)
+    data_out.add_data_vector(q, "localization_q", DataOut<3>::type_cell_data);
   data_out.add_data_vector(weak, "imperfection", DataOut<3>::type_cell_data);
   data_out.add_data_vector(rank, "rank", DataOut<3>::type_cell_data);
   data_out.build_patches(prm.degree);

@@ -84,6 +84,11 @@ public:
   /// Yield function value at a stress and kappa (<= 0 admissible) [Pa].
   virtual double yield_function(const Vector6 &stress, double kappa) const = 0;
 
+  /// Whether update()'s tangent is an elastoplastic one that Rice's acoustic tensor can scan
+  /// for a loss of ellipticity (the plasticity models); a model without a yield surface
+  /// (PointStateModel.h) has no such tangent, and an engine then reports no indicator.
+  virtual bool has_plastic_tangent() const { return true; }
+
   virtual const IsotropicElasticity &elasticity() const = 0;
   virtual std::string name() const = 0;
 };

@@ -75,6 +75,9 @@ public:
   MaterialPointUpdate update(const Vector6 &total_strain, const PlasticHistory &old) const final;
   /// No yield surface: always admissible.
   double yield_function(const Vector6 &, double) const override { return -1.0; }
+  /// Its tangent is the model's own (a DEM cell's contact stiffness: positive semi-definite),
+  /// not an elastoplastic one: nothing for the acoustic tensor to scan.
+  bool has_plastic_tangent() const override { return false; }
 };
 
 /// J a of a rate-form point (the file comment): C the tangent of the Cauchy stress in D

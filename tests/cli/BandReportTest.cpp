@@ -119,7 +119,8 @@ TEST(BandReport, AHomogeneousBoxRecordsItsMidPlaneAboutTheBoxCentreWithAnIndexOf
 // engine writes its own mid-plane file; every map row has the FE cube and the FEM x DEM panels in
 // that order (no DEM ran; a box would have none anyway), and the verdict table has a strain-field
 // row per FE engine, after the FE cube's acoustic-tensor row (the cells of FEM x DEM have no
-// plastic tangent to scan: no acoustic-tensor row), in the HTML and in metrics.json.
+// plastic tangent to scan: its response has no indicator, so no acoustic-tensor row), in the
+// HTML and in metrics.json.
 TEST(BandReport, ATinyFemDemAndContinuumPairOnABoxReportsBothFePanelsAndTheStrainFieldRows)
 {
   const test::ScratchFolder scratch("band-pair");
@@ -166,8 +167,15 @@ TEST(BandReport, ATinyFemDemAndContinuumPairOnABoxReportsBothFePanelsAndTheStrai
   EXPECT_EQ(sources, expected);
   for (const char *row : {"<td>FE cube (strain field)</td>", "<td>FEM x DEM (strain field)</td>"})
     EXPECT_NE(html.find(row), std::string::npos) << row;
-  for (const auto &[engine, response] : out.runs)
+  for (const auto &[engine, response] : out.runs) {
     std::printf("[tiny pair] %s: %zu samples\n", engine.c_str(), response.samples.size());
+    EXPECT_EQ(response.extra_index("localization_q") < 0, engine == "fem-dem") << engine;
+    if (engine != "material-point") {
+      const int updates = response.extra_index("material_updates");
+      ASSERT_GE(updates, 0) << engine;
+      EXPECT_GT(response.samples.back().extras[updates], 0.0) << engine;
+    }
+  }
   for (const auto &row : m["rudnicki_rice"]["rows"])
     std::printf("[tiny pair] %s: %s\n", row["source"].get<std::string>().c_str(),
                 row["note"].get<std::string>().c_str());
