@@ -117,14 +117,16 @@ OnsetEstimate strain_field_onset(const StrainedSection &s, const std::string &so
   e.strain = r.onset.label;
   e.has_angle = r.band.found && r.band.has_angle;
   e.angle_deg = r.band.angle_to_compressive_deg;
-  double largest = 0.0;
-  for (double h : r.index)
-    if (std::isfinite(h))
-      largest = std::max(largest, h);
+  double largest = 0.0, largest_at = 0.0;
+  for (std::size_t i = 0; i < r.index.size(); ++i)
+    if (std::isfinite(r.index[i]) && r.index[i] > largest) {
+      largest = r.index[i];
+      largest_at = r.labels[i];
+    }
   std::ostringstream note;
   note << s.series->times.size() << " mid-plane states of " << s.series->x.size()
        << " points; heterogeneity index (CV of the incremental in-plane local shear strain) up to " << largest
-       << ", threshold " << o.threshold;
+       << " (at " << 100.0 * largest_at << " %), threshold " << o.threshold;
   if (r.band.found)
     note << "; band of " << r.band.points << " points" << (r.onset.found ? "" : " (last increment)")
          << ", linearity " << r.band.linearity;

@@ -49,7 +49,7 @@ void declare_continuum(dealii::ParameterHandler &prm)
                     "and wall stresses are the box's; the DEM engines keep their cube.");
   prm.declare_entry("box cells", "", List(Integer(1, 512), 0, 3),
                     "Hexahedra along x, y, z of the box ('box edges'); empty: 'cells per edge' on every axis.");
-  prm.declare_entry("degree", "1", Integer(1, 4), "Polynomial degree of the FE_Q displacement.");
+  prm.declare_entry("degree", "1", Integer(1, 3), "Polynomial degree of the FE_Q displacement.");
   prm.declare_entry("volumetric integration", "full", Selection("full|b-bar"),
                     "full: every quadrature point takes its own volumetric strain; b-bar: the cell average "
                     "(Hughes 1980), which removes the volumetric locking of Q1 under nearly isochoric plastic "

@@ -1,4 +1,5 @@
 #include "continuum/driver/MaterialPointEngine.h"
+#include "continuum/driver/LocalizationColumns.h"
 
 
 #include <algorithm>
@@ -92,16 +93,16 @@ bool MaterialPointEngine::evaluate(const Tensor3 &eps, PointEvaluation &out) con
 
 std::vector<ExtraColumn> MaterialPointEngine::extra_columns() const
 {
-  return {{"kappa", "1", "equivalent plastic strain of the point"},
-          {"state_flag", "1", "return region: 0 elastic, 1 plane, 2 left edge, 3 right edge, 4 apex"},
-          {"plastic_volumetric_strain", "1", "tr(eps_p)"},
-          {"localization_q", "1", "min over n of det(n.C_ep.n)/det(n.C_e.n) (1 elastic, <= 0 localized)"},
-          {"localization_onset_time", "s", "program time of the first q <= 0 (-1: not yet)"},
-          {"localization_nx", "1", "band normal at onset, x"},
-          {"localization_ny", "1", "band normal at onset, y"},
-          {"localization_nz", "1", "band normal at onset, z"},
-          {"newton_iterations", "1", "largest stress-axis Newton iteration count in the last interval"},
-          {"control", "1", "0: the program's strains; 1: plastic-strain control past a snap-back of the driven axis"}};
+  std::vector<ExtraColumn> columns{
+    {"kappa", "1", "equivalent plastic strain of the point"},
+    {"state_flag", "1", "return region: 0 elastic, 1 plane, 2 left edge, 3 right edge, 4 apex"},
+    {"plastic_volumetric_strain", "1", "tr(eps_p)"}};
+  const std::vector<ExtraColumn> localization =
+    localization_columns({"min over n of det(n.C_ep.n)/det(n.C_e.n) (1 elastic, <= 0 localized)", false});
+  columns.insert(columns.end(), localization.begin(), localization.end());
+  columns.push_back({"newton_iterations", "1", "largest stress-axis Newton iteration count in the last interval"});
+  columns.push_back({"control", "1", "0: the program's strains; 1: plastic-strain control past a snap-back of the driven axis"});
+  return columns;
 }
 
 void MaterialPointEngine::begin_control(const StageControl &control)

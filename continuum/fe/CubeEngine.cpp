@@ -2,6 +2,7 @@
 // measurement, save/restore. The model and the method are described in CubeEngine.h;
 // the choices (walls, reactions, crack band) and measured behaviour in docs/continuum-fe.md.
 #include "continuum/fe/CubeEngineImpl.h"
+#include "continuum/driver/LocalizationColumns.h"
 #include "continuum/fe/SecantPairs.h"
 #include "continuum/fe/RigidBodyModes.h"
 #include "continuum/models/Mandel.h"
@@ -1065,16 +1066,11 @@ std::vector<ExtraColumn> CubeEngine::extra_columns() const
     {"relaxed_steps", "1", "load steps accepted at the stagnation tolerance (a table kink) in the last interval"},
     {"plastic_fraction", "1", "volume fraction of plastic quadrature points"},
     {"kappa_max", "1", "largest equivalent plastic strain"}};
-  if (impl_->rice_scan)
-    columns.insert(columns.end(),
-                   {{"localization_q", "1", "min over points of min_n det(n.C_ep.n)/det(n.C_e.n) (<= 0 localized)"},
-                    {"localization_onset_time", "s", "program time of the first q <= 0 (-1: not yet)"},
-                    {"localization_x", "m", "onset point, x"},
-                    {"localization_y", "m", "onset point, y"},
-                    {"localization_z", "m", "onset point, z"},
-                    {"localization_nx", "1", "band normal at onset, x"},
-                    {"localization_ny", "1", "band normal at onset, y"},
-                    {"localization_nz", "1", "band normal at onset, z"}});
+  if (impl_->rice_scan) {
+    const std::vector<ExtraColumn> localization =
+      localization_columns({"min over points of min_n det(n.C_ep.n)/det(n.C_e.n) (<= 0 localized)", true});
+    columns.insert(columns.end(), localization.begin(), localization.end());
+  }
   columns.push_back({"material_updates", "1",
                      "quadrature-point material updates computed in the last interval (FEM x DEM: RVE runs, its cost)"});
   return columns;
