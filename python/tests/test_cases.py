@@ -25,11 +25,11 @@ class ACaseFile(unittest.TestCase):
                 self.assertEqual(raised.exception.file, path)
 
     def test_an_engine_refusal_is_raised_by_validate_not_by_reading(self):
-        case = geocomp.read_case("tests/bad_cases/cube_degree_four.prm")
+        case = geocomp.read_case("tests/bad_cases/fem_dem_lognormal_grains.prm")
         with self.assertRaises(geocomp.CaseError) as raised:
             case.validate()
-        self.assertEqual(raised.exception.parameter, "continuum")
-        self.assertIn("degree", str(raised.exception))
+        self.assertEqual(raised.exception.parameter, "dem rve")
+        self.assertIn("lognormal", str(raised.exception))
 
     def test_a_good_case_passes_check(self):
         self.assertEqual(run_cli("check", DEMO).returncode, 0)
