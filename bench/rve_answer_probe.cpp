@@ -6,7 +6,8 @@
 // (x at the case's pressure by the cell's servo, y fixed, z shortened by one sample of the
 // first stage's z rate per `steps per increment` steps: the biaxial case's program in one cell) and, at every
 // committed increment de, drives copies kinematically as RveMaterial does, by de and by
-// de +- d |de| D (D a fixed random symmetric unit direction, d = 1e-1, 1e-2, 1e-3). Per d it
+// de +- d |de| D (its velocity gradient RveMaterial::finite_velocity_gradient of the cell matrices'
+// increment; D a fixed random symmetric unit direction, d = 1e-1, 1e-2, 1e-3). Per d it
 // writes the first difference |s(+) - s(-)| / 2p (the linear answer) and the second
 // difference |s(+) + s(-) - 2 s(0)| / p (zero for a linear map, O(d^2) for a smooth one; a
 // kink or noise shows as O(d) or O(1)), each for three readings of the stress: the end of the
@@ -16,6 +17,7 @@
 // usage: geocomp-bench-rve-answer <case.prm> <increments> <window m> <output.csv>
 // Exit 2 on bad arguments (nothing written), 1 when the preparation fails (the file says so).
 #include "compare/case/CaseDescription.h"
+#include "coupled/RveMaterial.h"
 #include "coupled/RvePreparation.h"
 #include "coupled/case/RveSection.h"
 
@@ -41,6 +43,7 @@ Readings drive(dem::PeriodicCell cell, const dem::Mat3 &l, int n, int m)
 {
   cell.set_velocity_gradient(l);
   std::vector<dem::Mat3> s;
+  s.reserve(std::size_t(m));
   for (int k = 0; k < n; ++k) {
     cell.step();
     if (k >= n - m)
@@ -101,7 +104,8 @@ int main(int argc, char **argv)
   }
   dem::PeriodicCell &cell = *prepared;
   const int n = int(c.rve.steps_per_increment);
-  const double p = settings.pressure, dt = cell.parameters().time_step, de = c.program.sample_interval * std::abs(c.program.stages.front().axes[2].value);
+  const double p = settings.pressure, dt = cell.parameters().time_step;
+  const double de = c.program.sample_interval * std::abs(c.program.stages.front().axes[2].value);
   cell.control().set_parameters(dem::MixedControl::Parameters{0.2, 30.0}); // the servo follows 8 /s
   cell.control().set_velocity_gradient(dem::Mat3::Zero());
   cell.control().set_stress(0, 0, -p);
@@ -120,14 +124,14 @@ int main(int argc, char **argv)
     const dem::PeriodicCell committed = cell;
     cell.run(std::uint64_t(n));
     const dem::Mat3 s = cell.stress().total();
-    dem::Mat3 l = dem::Mat3::Zero(); // the increment the servo took, as a kinematic one
-    l(2, 2) = -de / (n * dt);
-    l(0, 0) = cell.velocity_gradient()(0, 0);
+    // The increment the servo took, H_{n+1} H_n^-1, as the fem-dem engine would drive it.
+    const dem::Mat3 l = coupled::RveMaterial::finite_velocity_gradient(
+        cell.cell().h() * committed.cell().inverse(), std::uint64_t(n), dt);
     const Readings zero = drive(committed, l, n, m);
     for (double d : {1e-1, 1e-2, 1e-3}) {
       const dem::Mat3 dl = d * l.norm() * dir;
       const Readings a = drive(committed, l + dl, n, m), b = drive(committed, l - dl, n, m);
-      out << inc * de << ',' << (s(0, 0) - s(2, 2)) / -s.trace() * 3.0 << ',' << d << ','
+      out << inc * de << ',' << (s(0, 0) - s(2, 2)) / cell.stress().pressure() << ',' << d << ','
           << (a.end - b.end).norm() / (2 * p) << ',' << (a.end + b.end - 2 * zero.end).norm() / p << ','
           << (a.mean + b.mean - 2 * zero.mean).norm() / p << ',' << (a.fit + b.fit - 2 * zero.fit).norm() / p
           << '\n';
