@@ -4,6 +4,7 @@
 
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace geocomp::coupled {
@@ -49,7 +50,7 @@ RveMaterial::RveMaterial(dem::PeriodicCell prepared, const RveParameters &parame
 
 std::shared_ptr<const continuum::PointState> RveMaterial::initial_state(const Vector6 &initial_strain) const
 {
-  return std::make_shared<const RveState>(prepared_, initial_strain);
+  return std::make_shared<const RveState>(prepared_, initial_strain, tangent(prepared_));
 }
 
 dem::Mat3 RveMaterial::velocity_gradient(const Vector6 &increment, std::uint64_t n, double time_step)
@@ -84,6 +85,18 @@ Matrix6 RveMaterial::tangent(const dem::PeriodicCell &cell)
   return c;
 }
 
+Matrix6 RveMaterial::branch_tangent(const Matrix6 &contact, const Vector6 &s, const Vector6 &y)
+{
+  const Vector6 cs = contact * s;
+  const double scs = s.dot(cs), sy = s.dot(y);
+  if (!(scs > 0.0) || !std::isfinite(sy))
+    return contact;
+  const double theta = sy >= 0.2 * scs ? 1.0 : 0.8 * scs / (scs - sy); // Powell's damping
+  const Vector6 r = theta * y + (1.0 - theta) * cs;
+  const Matrix6 c = contact - cs * cs.transpose() / scs + r * r.transpose() / s.dot(r); // BFGS: C~ s = r
+  return 0.5 * (c + c.transpose());
+}
+
 continuum::PointStateUpdate RveMaterial::advance(const Vector6 &total_strain,
                                                  const std::shared_ptr<const continuum::PointState> &old) const
 {
@@ -94,7 +107,7 @@ continuum::PointStateUpdate RveMaterial::advance(const Vector6 &total_strain,
   const Vector6 increment = total_strain - committed->strain;
   if (increment.isZero(0.0)) {
     u.stress = stress(committed->cell);
-    u.tangent = tangent(committed->cell);
+    u.tangent = committed->tangent;
     u.state = old;
     return u;
   }
@@ -104,7 +117,10 @@ continuum::PointStateUpdate RveMaterial::advance(const Vector6 &total_strain,
   trial->cell.set_velocity_gradient(velocity_gradient(increment, n, trial->cell.parameters().time_step));
   trial->cell.run(n);
   u.stress = stress(trial->cell);
-  u.tangent = tangent(trial->cell);
+  trial->tangent = tangent(trial->cell);
+  if (p_.tangent == RveTangent::branch_secant)
+    trial->tangent = branch_tangent(trial->tangent, increment, u.stress - stress(committed->cell));
+  u.tangent = trial->tangent;
   u.state = std::move(trial);
   return u;
 }
@@ -116,21 +132,31 @@ continuum::FiniteStrainUpdate RveMaterial::advance_finite(const continuum::Matri
   if (!committed)
     throw std::logic_error("dem rve: the point state is not an RVE's");
   const continuum::Matrix3 increment = F * committed->deformation_gradient.inverse();
-  const dem::PeriodicCell *cell = &committed->cell;
+  const RveState *state = committed;
   continuum::FiniteStrainUpdate u;
   u.history.state = old.state;
   if (F != committed->deformation_gradient) {
     auto trial = std::make_shared<RveState>(*committed); // the committed cell is never touched
     trial->deformation_gradient = F;
     const std::uint64_t n = p_.steps_per_increment;
-    trial->cell.set_velocity_gradient(finite_velocity_gradient(increment, n, trial->cell.parameters().time_step));
+    const dem::Mat3 l = finite_velocity_gradient(increment, n, trial->cell.parameters().time_step);
+    trial->cell.set_velocity_gradient(l);
     trial->cell.run(n);
-    cell = &trial->cell;
+    trial->tangent = tangent(trial->cell);
+    if (p_.tangent == RveTangent::branch_secant) {
+      const dem::Mat3 log = l * (double(n) * trial->cell.parameters().time_step); // ln(F_{n+1} F_n^-1)
+      const dem::Mat3 w = 0.5 * (log - log.transpose()), &sigma_n = committed->cell.stress().total();
+      const dem::Mat3 jaumann = trial->cell.stress().total() - sigma_n - (w * sigma_n - sigma_n * w);
+      trial->tangent = branch_tangent(trial->tangent, continuum::to_mandel(0.5 * (log + log.transpose())),
+                                      continuum::to_mandel(jaumann));
+    }
+    state = trial.get();
     u.history.state = std::move(trial);
   }
+  const dem::PeriodicCell *cell = &state->cell;
   u.jacobian = F.determinant();
   u.kirchhoff_stress = u.jacobian * cell->stress().total();
-  u.logarithmic_tangent = tangent(*cell);
+  u.logarithmic_tangent = state->tangent;
   u.spatial_tangent = continuum::jaumann_spatial_tangent(u.logarithmic_tangent, u.kirchhoff_stress, u.jacobian);
   u.history.deformation_gradient = F;
   return u;

@@ -42,6 +42,28 @@
 // contacts (their spins are absolute), so a rotated cell's stress co-rotates - to within
 // what the tangential springs lag (measured in docs/coupled.md).
 //
+// Tangent along the branch (`tangent = branch secant`, the default). A cell that slides
+// answers an increment and its opposite with stiffnesses a tenth apart (docs/coupled.md, "The
+// cells' answer near the floor"): its law is incrementally non-linear, and the contact
+// stiffness above, the loading branch of no sliding contact, is several times too stiff along
+// the branch the point is on. A rate-independent cell's answer is positively homogeneous of
+// degree one in the increment, sigma(eps_n + lambda s) - sigma_n = lambda (sigma(eps_n + s) -
+// sigma_n) for lambda > 0, so its derivative along the increment s is the secant (Euler):
+// $$ \frac{\partial\sigma}{\partial\varepsilon}\,s = y,\qquad s = \Delta\varepsilon,\quad y = \sigma_{n+1} - \sigma_n , $$
+// measured by the run the iterate needs anyway, at no extra cost. The tangent made from it is
+// the contact stiffness C updated by the BFGS formula, a rank-two change that carries the
+// secant along s and leaves C on every v with v.C.s = 0 and v.r = 0, with Powell's damping
+// (Math. Programming 14, 1978) keeping it positive definite where the cell softens along s
+// (y.s < 0.2 s.C.s):
+// $$ \tilde C = C - \frac{C s\,(C s)^T}{s^T C s} + \frac{r\,r^T}{s^T r},\qquad r = \theta y + (1-\theta) C s,\quad
+//    \theta = \begin{cases} 1 & s^T y \ge 0.2\, s^T C s \\ \frac{0.8\, s^T C s}{s^T C s - s^T y} & \text{else,} \end{cases} $$
+// so $\tilde C s = r$ (= y unless damped). At finite strain s is the symmetric part of ln(F_{n+1}
+// F_n^{-1}) and y the Jaumann increment of the Cauchy stress, sigma_{n+1} - sigma_n - (W sigma_n -
+// sigma_n W), W its skew part, as C is the rate form's. The committed state keeps the tangent
+// of the increment that made it: a zero increment (the predictor of the next load step) answers
+// with it, the tangent of the branch the point was last on. `tangent = contact stiffness` is the
+// contact stiffness alone at every state.
+//
 // `elasticity()` (the FE cube's reference stiffness: residual floor, prestrain, localization
 // scan) is the isotropic projection of the prepared cell's tangent:
 // $K = C_{iijj}/9$, $G = (C_{ijij} - C_{iijj}/3)/10$.
@@ -55,17 +77,25 @@
 
 namespace geocomp::coupled {
 
+/// The tangent a cell answers with (the file comment).
+enum class RveTangent { contact_stiffness, branch_secant };
+
 struct RveParameters {
-  std::uint64_t steps_per_increment = 200; ///< n >= 1: DEM steps over one strain increment
+  std::uint64_t steps_per_increment = 200;         ///< n >= 1: DEM steps over one strain increment
+  RveTangent tangent = RveTangent::branch_secant; ///< of every update
 };
 
-/// The point state: the cell and the total strain (small strain) or deformation gradient
-/// (finite strain) it was driven to.
+/// The point state: the cell, the total strain (small strain) or deformation gradient
+/// (finite strain) it was driven to, and the tangent it answers with.
 struct RveState : continuum::PointState {
-  RveState(dem::PeriodicCell c, const continuum::Vector6 &e) : cell(std::move(c)), strain(e) {}
+  RveState(dem::PeriodicCell c, const continuum::Vector6 &e, const continuum::Matrix6 &t)
+    : cell(std::move(c)), strain(e), tangent(t)
+  {
+  }
   dem::PeriodicCell cell;
   continuum::Vector6 strain;                                                       ///< eps_n (Mandel) of the caller
   continuum::Matrix3 deformation_gradient = continuum::Matrix3::Identity();        ///< F_n of the caller
+  continuum::Matrix6 tangent; ///< of the increment that made this state (the file comment)
 };
 
 class RveMaterial : public continuum::PointStateModel {
@@ -95,6 +125,10 @@ public:
   /// Stress (Mandel, tension positive) and tangent of a cell as this model reports them.
   static continuum::Vector6 stress(const dem::PeriodicCell &cell);
   static continuum::Matrix6 tangent(const dem::PeriodicCell &cell);
+  /// The damped BFGS update of `contact` that carries the secant y along s (the file
+  /// comment); `contact` itself where s.C.s is not positive.
+  static continuum::Matrix6 branch_tangent(const continuum::Matrix6 &contact, const continuum::Vector6 &s,
+                                           const continuum::Vector6 &y);
 
 private:
   dem::PeriodicCell prepared_;

@@ -18,6 +18,7 @@ struct RveCaseParameters {
   unsigned int steps_per_increment = 200; ///< DEM steps per FE strain increment
   double newton_tolerance = 2e-3;         ///< of the fem-dem engine's cube (relative |R|)
   unsigned int secant_pairs = 8;          ///< BFGS pairs per load step on the cells' tangent
+  std::string tangent = "branch secant";  ///< branch secant | contact stiffness
 
   template <class Self, class V>
   static void visit(Self &p, V &&v)
@@ -30,6 +31,7 @@ struct RveCaseParameters {
     v("steps per increment", p.steps_per_increment);
     v("newton tolerance", p.newton_tolerance);
     v("secant pairs", p.secant_pairs);
+    v("tangent", p.tangent);
   }
 };
 

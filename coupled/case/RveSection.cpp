@@ -9,6 +9,7 @@ namespace geocomp::sections {
 
 using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
 
 void declare_dem_rve(dealii::ParameterHandler &prm)
 {
@@ -42,6 +43,12 @@ void declare_dem_rve(dealii::ParameterHandler &prm)
                     "The fem-dem engine's quasi-Newton: the BFGS pairs (Matthies & Strang) of a load step's "
                     "iterations, at most this many, update the cells' contact-stiffness tangent assembled once "
                     "per step; 0 = the tangent of every iterate, unchanged (linear convergence).");
+  prm.declare_entry("tangent", "branch secant", Selection("branch secant|contact stiffness"),
+                    "The tangent every cell answers with (coupled/RveMaterial.h): 'contact stiffness' = the "
+                    "normal-spring stiffness of its contact network (the branch of no sliding, too stiff where "
+                    "the grains slide); 'branch secant' = that stiffness updated (damped BFGS) to carry the "
+                    "cell's secant from its committed state along the increment, the derivative along the "
+                    "increment of a rate-independent answer, measured by the run the iterate needs anyway.");
   prm.leave_subsection();
 }
 
@@ -88,6 +95,7 @@ std::shared_ptr<const RveMaterial> make_rve_material(const dem::DemCase &c, cons
 {
   RveParameters rp;
   rp.steps_per_increment = p.steps_per_increment;
+  rp.tangent = p.tangent == "contact stiffness" ? RveTangent::contact_stiffness : RveTangent::branch_secant;
   return std::make_shared<const RveMaterial>(prepare_rve(rve_grains(c), rve_settings(c, p)), rp);
 }
 

@@ -42,6 +42,20 @@ TEST(RveSection, TheSectionIsReadWithItsDefaultsAndTheGivenValues)
   EXPECT_EQ(p.growth_pressure_fraction, 1.0);
   EXPECT_EQ(p.local_damping, coupled::RveCaseParameters{}.local_damping);
   EXPECT_EQ(p.seed, coupled::RveCaseParameters{}.seed);
+  EXPECT_EQ(p.tangent, "branch secant");
+}
+
+TEST(RveSection, TheTangentEntryReachesTheRveMaterial)
+{
+  dealii::ParameterHandler prm;
+  sections::declare_dem_rve(prm);
+  prm.parse_input_from_string("subsection dem rve\n  set particles = 60\n  set tangent = contact stiffness\nend\n");
+  const coupled::RveCaseParameters p = sections::parse_dem_rve(prm, sections::Reader{"test.prm"});
+  EXPECT_EQ(coupled::make_rve_material(small_grains(), p)->parameters().tangent,
+            coupled::RveTangent::contact_stiffness);
+  coupled::RveCaseParameters q = p;
+  q.tangent = "branch secant";
+  EXPECT_EQ(coupled::make_rve_material(small_grains(), q)->parameters().tangent, coupled::RveTangent::branch_secant);
 }
 
 TEST(RveSection, TheCasesGrainsArePreparedToTheSpecimensPressureWithTheWallBoxEnginesTimeStep)
