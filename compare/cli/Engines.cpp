@@ -120,6 +120,8 @@ continuum::CubeParameters cube_parameters(const CaseDescription &c, const std::s
   for (std::size_t a = 0; a < c.continuum.box_cells.size() && a < 3; ++a)
     p.box_cells[a] = static_cast<unsigned>(c.continuum.box_cells[a]);
   p.degree = c.continuum.degree;
+  for (std::size_t a = 0; a < c.continuum.quadrature_points.size() && a < 3; ++a)
+    p.quadrature_points[a] = static_cast<unsigned>(c.continuum.quadrature_points[a]);
   p.initial_stress = -c.specimen.isotropic_pressure; // tension positive
   p.imperfection_radius = c.continuum.imperfection_radius;
   p.imperfection_cohesion_factor = c.continuum.imperfection_factor;

@@ -75,6 +75,7 @@ struct ContinuumParameters {
   std::vector<double> box_edges;        ///< [m] L_x, L_y, L_z of a box; empty = the specimen's cube
   std::vector<double> box_cells;        ///< n_x, n_y, n_z (integers) of the box; empty = cells per edge
   unsigned int degree = 1;
+  std::vector<double> quadrature_points; ///< Gauss points along x, y, z (integers); empty = degree + 1 each
   std::string volumetric_integration = "full"; ///< full | b-bar
   double imperfection_radius = 0.0;     ///< [m]; 0 = none
   double imperfection_factor = 0.9;     ///< cohesion multiplier inside it
@@ -106,6 +107,7 @@ struct ContinuumParameters {
     v("box edges", p.box_edges);
     v("box cells", p.box_cells);
     v("degree", p.degree);
+    v("quadrature points", p.quadrature_points);
     v("volumetric integration", p.volumetric_integration);
     v("imperfection radius", p.imperfection_radius);
     v("imperfection factor", p.imperfection_factor);

@@ -1,6 +1,7 @@
 // The `continuum` section: the continuum engines' material (Mohr-Coulomb tables,
 // Drucker-Prager matching, S1's model in its subsection), mesh and solver.
 #include "continuum/case/ContinuumSections.h"
+#include "continuum/fe/GaussPoints.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +51,12 @@ void declare_continuum(dealii::ParameterHandler &prm)
   prm.declare_entry("box cells", "", List(Integer(1, 512), 0, 3),
                     "Hexahedra along x, y, z of the box ('box edges'); empty: 'cells per edge' on every axis.");
   prm.declare_entry("degree", "1", Integer(1, 3), "Polynomial degree of the FE_Q displacement.");
+  prm.declare_entry("quadrature points", "", List(Integer(1, 6), 0, 3),
+                    "Gauss points along x, y, z in every hexahedron; empty: degree + 1 on every axis (full "
+                    "integration). For degree 2 or 3 one axis may take 'degree' points: the thickness of a plane-strain "
+                    "slab one element thick, whose fields do not vary across it (its residual stays exact, the "
+                    "element keeps no zero-energy mode; continuum/fe/GaussPoints.h). FEM x DEM: one DEM cell per "
+                    "point.");
   prm.declare_entry("volumetric integration", "full", Selection("full|b-bar"),
                     "full: every quadrature point takes its own volumetric strain; b-bar: the cell average "
                     "(Hughes 1980), which removes the volumetric locking of Q1 under nearly isochoric plastic "
@@ -108,6 +115,15 @@ ContinuumParameters parse_continuum(dealii::ParameterHandler &prm, const Reader 
     r.fail("continuum/box edges", "edges > 0 [m]");
   if (!p.box_cells.empty() && p.box_cells.size() != 3)
     r.fail("continuum/box cells", "three counts n_x, n_y, n_z >= 1, or none (cells per edge on every axis)");
+  if (!p.quadrature_points.empty() && p.quadrature_points.size() != 3)
+    r.fail("continuum/quadrature points", "three counts along x, y, z, or none (degree + 1 on every axis)");
+  if (p.quadrature_points.size() == 3) {
+    const std::array<unsigned, 3> n{{static_cast<unsigned>(p.quadrature_points[0]),
+                                     static_cast<unsigned>(p.quadrature_points[1]),
+                                     static_cast<unsigned>(p.quadrature_points[2])}};
+    if (const std::string problem = continuum::gauss_points_problem(p.degree, n); !problem.empty())
+      r.fail("continuum/quadrature points", problem);
+  }
   if (p.volumetric_integration == "b-bar" && p.kinematics == "finite strain")
     r.fail("continuum/volumetric integration", "b-bar is a small-strain method: set kinematics = small strain");
   for (const auto &[k, c] : p.cohesion.points)

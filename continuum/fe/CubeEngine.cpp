@@ -3,6 +3,7 @@
 // the choices (walls, reactions, crack band) and measured behaviour in docs/continuum-fe.md.
 #include "continuum/fe/CubeEngineImpl.h"
 #include "continuum/driver/LocalizationColumns.h"
+#include "continuum/fe/GaussRule.h"
 #include "continuum/fe/SecantPairs.h"
 #include "continuum/fe/RigidBodyModes.h"
 #include "continuum/models/Mandel.h"
@@ -90,6 +91,8 @@ void check_parameters(const CubeParameters &p)
     fail("box cells", "must all be >= 1 (or all 0: cells per side on every axis)");
   if (p.degree < 1 || p.degree > 3)
     fail("degree", "must be 1, 2 or 3");
+  if (const std::string problem = gauss_points_problem(p.degree, p.quadrature_points); !problem.empty())
+    fail("quadrature points", problem);
   if (p.linear_solver != "gmres" && p.linear_solver != "cg" && p.linear_solver != "direct")
     fail("linear solver", "must be gmres, cg or direct");
   if (p.preconditioner != "amg" && p.preconditioner != "boomeramg" && p.preconditioner != "ml" &&
@@ -142,7 +145,7 @@ CubeEngine::Impl::Impl(const CubeParameters &p, std::shared_ptr<const MaterialFa
   , tria(c)
   , fe(FE_Q<3>(p.degree), 3)
   , dof_handler(tria)
-  , quadrature(p.degree + 1)
+  , quadrature(gauss_rule(p.degree, p.quadrature_points))
   , face_quadrature(p.degree + 1)
   , scan([&] {
     AcousticTensorScan::Options o;

@@ -78,6 +78,10 @@ struct CubeParameters {
     return box_cells[0] == 0 ? std::array<unsigned, 3>{{cells_per_side, cells_per_side, cells_per_side}} : box_cells;
   }
   unsigned degree = 1;            ///< FE_Q degree, 1..3
+  /// Gauss points along x, y, z in every hexahedron; all zero = degree + 1 on every axis (full
+  /// integration). For degree 2 or 3 one axis may take `degree` points: the thickness of a
+  /// plane-strain slab (GaussPoints.h: why it keeps no zero-energy mode; Q1 would).
+  std::array<unsigned, 3> quadrature_points{{0, 0, 0}};
   /// full | b-bar. b-bar (Hughes 1980) replaces the volumetric strain at every quadrature
   /// point by its cell average, which removes the volumetric locking of Q1 under nearly
   /// isochoric plastic flow; meant for degree 1.

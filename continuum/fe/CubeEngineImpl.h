@@ -144,7 +144,7 @@ struct CubeEngine::Impl {
   dl::parallel::distributed::Triangulation<3> tria;
   dl::FESystem<3> fe;
   dl::DoFHandler<3> dof_handler;
-  dl::QGauss<3> quadrature;
+  dl::Quadrature<3> quadrature; ///< QAnisotropic of continuum/quadrature points (GaussPoints.h)
   dl::QGauss<2> face_quadrature;
   dl::IndexSet owned, relevant;
   double h_e = 0.0; ///< element size (cube root of the cell volume)

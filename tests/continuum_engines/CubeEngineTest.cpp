@@ -119,6 +119,25 @@ LoadingProgram plane_strain(double strain, double interval)
   program.validate();
   return program;
 }
+/// Every shear-stage sample of `r` is the closed-form elastic triaxial state (to 1e-8);
+/// returns how many were checked.
+int expect_elastic_triaxial(const Response &r, Kinematics kinematics, const std::string &label)
+{
+  int checked = 0;
+  for (const auto &s : r.samples) {
+    if (s.stage != 1)
+      continue;
+    const auto [ex, sz] = elastic_triaxial(kinematics, s.strain(2, 2));
+    EXPECT_NEAR(s.strain(0, 0) / ex, 1.0, 1e-8) << to_string(kinematics) << " " << label << " t " << s.time;
+    EXPECT_NEAR(s.strain(1, 1) / ex, 1.0, 1e-8);
+    EXPECT_NEAR(s.stress(0, 0) / -p, 1.0, 1e-8);
+    EXPECT_NEAR(s.stress(1, 1) / -p, 1.0, 1e-8);
+    EXPECT_NEAR(s.stress(2, 2) / sz, 1.0, 1e-8);
+    EXPECT_NEAR(s.stress(0, 1) / p, 0.0, 1e-8);
+    ++checked;
+  }
+  return checked;
+}
 } // namespace
 
 TEST(CubeEngine, ElasticTriaxialMatchesClosedFormOnQ1AndQ2)
@@ -129,20 +148,7 @@ TEST(CubeEngine, ElasticTriaxialMatchesClosedFormOnQ1AndQ2)
       cp.kinematics = kinematics;
       CubeEngine engine(cp, elastic(), MPI_COMM_WORLD);
       const Response r = ProgramRunner(triaxial(0.004), engine).run();
-      int checked = 0;
-      for (const auto &s : r.samples) {
-        if (s.stage != 1)
-          continue;
-        const auto [ex, sz] = elastic_triaxial(kinematics, s.strain(2, 2));
-        EXPECT_NEAR(s.strain(0, 0) / ex, 1.0, 1e-8) << to_string(kinematics) << " degree " << degree << " t " << s.time;
-        EXPECT_NEAR(s.strain(1, 1) / ex, 1.0, 1e-8);
-        EXPECT_NEAR(s.stress(0, 0) / -p, 1.0, 1e-8);
-        EXPECT_NEAR(s.stress(1, 1) / -p, 1.0, 1e-8);
-        EXPECT_NEAR(s.stress(2, 2) / sz, 1.0, 1e-8);
-        EXPECT_NEAR(s.stress(0, 1) / p, 0.0, 1e-8);
-        ++checked;
-      }
-      EXPECT_GE(checked, 7);
+      EXPECT_GE(expect_elastic_triaxial(r, kinematics, "degree " + std::to_string(degree)), 7);
       // Small strain is linear: every load step converges in the predictor solve.
       if (kinematics == Kinematics::small_strain) {
         EXPECT_EQ(engine.statistics().newton_iterations, engine.statistics().steps);
@@ -285,6 +291,32 @@ TEST(CubeEngine, AHomogeneousPlasticBoxOfUnequalEdgesAndCellsEqualsTheMaterialPo
       EXPECT_NEAR(lateral(a), lateral(b), 1e-9) << to_string(kinematics) << " sample " << k;
     }
     EXPECT_LT(rb.samples.back().stress(2, 2), -2.0 * p); // loaded past yield
+  }
+}
+
+// The plane-strain slab's rule (continuum/quadrature points = 3, 2, 3 on Q2: two Gauss points
+// across the thickness, GaussPoints.h): a Q2 box under it keeps the closed-form homogeneous
+// elastic triaxial state, and updates 18 points an element, not 27.
+TEST(CubeEngine, AQ2BoxWithTwoGaussPointsAcrossItsThicknessKeepsTheClosedFormAndUpdatesEighteenAnElement)
+{
+  for (const Kinematics kinematics : {Kinematics::finite_strain, Kinematics::small_strain}) {
+    CubeParameters cp = small_cube(1, 2);
+    cp.kinematics = kinematics;
+    cp.box_edges = Vector3(0.5, 0.125, 1.0);
+    cp.box_cells = {{2, 1, 4}};
+    cp.quadrature_points = {{3, 2, 3}};
+    CubeEngine box(cp, elastic(), MPI_COMM_WORLD);
+    const Response r = ProgramRunner(triaxial(0.004), box).run();
+    EXPECT_GE(expect_elastic_triaxial(r, kinematics, "Q2, 3 x 2 x 3 Gauss points"), 7);
+    // The same passes with the full rule update 27 points an element.
+    cp.quadrature_points = {{0, 0, 0}};
+    CubeEngine full(cp, elastic(), MPI_COMM_WORLD);
+    ProgramRunner(triaxial(0.004), full).run();
+    const CubeStatistics &a = box.statistics(), &b = full.statistics();
+    ASSERT_EQ(a.residual_assemblies, b.residual_assemblies) << to_string(kinematics);
+    ASSERT_EQ(a.steps + a.cutbacks, b.steps + b.cutbacks) << to_string(kinematics);
+    EXPECT_EQ(27 * a.material_updates, 18 * b.material_updates) << to_string(kinematics);
+    EXPECT_GT(a.material_updates, 0ul);
   }
 }
 
