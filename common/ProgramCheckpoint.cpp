@@ -133,7 +133,7 @@ Response get_response(std::istream &in)
 
 void write_runner_state(std::ostream &out, const RunnerState &s)
 {
-  binary::put_tag(out, "GCRUNNER", 2);
+  binary::put_tag(out, "GCRUNNER", 3);
   put_response(out, s.response);
   binary::put_vector(out, s.stage_start_sample);
   binary::put(out, s.stage);
@@ -142,13 +142,14 @@ void write_runner_state(std::ostream &out, const RunnerState &s)
   binary::put(out, s.peak_sample);
   binary::put_vector(out, s.fired);
   binary::put(out, s.has_peak_state);
+  binary::put_vector(out, s.kept_samples);
   binary::put_tag(out, "GCRUNEND", 1);
 }
 
 RunnerState read_runner_state(std::istream &in)
 {
   RunnerState s;
-  binary::expect_tag(in, "GCRUNNER", 2);
+  binary::expect_tag(in, "GCRUNNER", 3);
   s.response = get_response(in);
   binary::get_vector(in, s.stage_start_sample);
   binary::get(in, s.stage);
@@ -157,6 +158,7 @@ RunnerState read_runner_state(std::istream &in)
   binary::get(in, s.peak_sample);
   binary::get_vector(in, s.fired);
   binary::get(in, s.has_peak_state);
+  binary::get_vector(in, s.kept_samples);
   binary::expect_tag(in, "GCRUNEND", 1);
   return s;
 }
@@ -187,8 +189,10 @@ namespace geocomp {
 
 void write_program_checkpoint(const std::filesystem::path &file, const std::string &key, const RunnerState &runner,
                               const LoadingEngine &engine, const EngineState &current, const EngineState *peak,
-                              std::uint64_t counter)
+                              const std::vector<const EngineState *> &kept, std::uint64_t counter)
 {
+  if (kept.size() != runner.kept_samples.size())
+    throw std::invalid_argument("write_program_checkpoint: one kept state per RunnerState::kept_samples entry");
   write_atomically(file, [&](const std::filesystem::path &tmp) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out)
@@ -199,6 +203,8 @@ void write_program_checkpoint(const std::filesystem::path &file, const std::stri
     engine.write_state(out, current);
     if (peak)
       engine.write_state(out, *peak);
+    for (const EngineState *state : kept)
+      engine.write_state(out, *state);
     binary::put(out, counter);
     binary::put_tag(out, "GCPRGEND", 1);
     out.flush();
@@ -224,6 +230,8 @@ std::optional<ProgramCheckpoint> read_program_checkpoint(const std::filesystem::
     c.current = engine.read_state(in);
     if (c.runner.has_peak_state)
       c.peak = engine.read_state(in);
+    for (std::size_t k = 0; k < c.runner.kept_samples.size(); ++k)
+      c.kept.push_back(engine.read_state(in));
     binary::get(in, c.counter);
     binary::expect_tag(in, "GCPRGEND", 1);
     return c;

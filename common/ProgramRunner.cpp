@@ -144,13 +144,20 @@ Response ProgramRunner::run()
   return std::move(response_);
 }
 
-Response ProgramRunner::resume(RunnerState state, std::unique_ptr<EngineState> peak)
+Response ProgramRunner::resume(RunnerState state, std::unique_ptr<EngineState> peak,
+                              std::vector<std::unique_ptr<EngineState>> kept)
 {
   if (state.stage < 0 || state.stage >= static_cast<int>(program_.stages.size()) ||
       state.stage_start_sample.size() != std::size_t(state.stage) + 1 ||
       state.fired.size() != program_.stages[state.stage].unload_at.size() || state.response.samples.empty() ||
-      state.has_peak_state != bool(peak))
+      state.has_peak_state != bool(peak) || kept.size() != state.kept_samples.size())
     throw std::invalid_argument("ProgramRunner::resume: the checkpoint does not belong to this program");
+  limit_states_.clear();
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    if (state.kept_samples[k] >= state.response.samples.size() || !kept[k])
+      throw std::invalid_argument("ProgramRunner::resume: the checkpoint does not belong to this program");
+    limit_states_[state.kept_samples[k]] = std::move(kept[k]);
+  }
   response_ = std::move(state.response);
   stage_start_sample_.assign(state.stage_start_sample.begin(), state.stage_start_sample.end());
   last_checkpoint_ = steady_seconds();
@@ -173,7 +180,10 @@ void ProgramRunner::maybe_checkpoint(const RunnerState &state, const EngineState
   const double now = steady_seconds();
   if (!stop && !(checkpoints_.every_seconds > 0.0 && now - last_checkpoint_ >= checkpoints_.every_seconds))
     return;
-  checkpoints_.write(state, *engine_.save(), peak);
+  std::vector<const EngineState *> kept;
+  for (const auto &entry : limit_states_) // in sample order, as state.kept_samples
+    kept.push_back(entry.second.get());
+  checkpoints_.write(state, *engine_.save(), peak, kept);
   last_checkpoint_ = steady_seconds();
   if (stop)
     throw ProgramStopped(state.time, state.response.samples.size());
@@ -216,7 +226,8 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
     std::any_of(stage.unload_at.begin(), stage.unload_at.end(),
                 [](const BranchTrigger &b) { return b.kind == BranchTrigger::Kind::AtPeak; });
 
-  limit_states_.clear(); // a resumed stage has none of the states before its checkpoint
+  if (!from) // a resumed stage keeps the bracket's states its checkpoint carried (resume())
+    limit_states_.clear();
   if (stage.locate_elastic_limit && !from)
     keep_limit_state(index, stage_start_sample_[index]);
 
@@ -279,6 +290,8 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
       for (bool f : fired)
         state.fired.push_back(f ? 1 : 0);
       state.has_peak_state = bool(peak_state);
+      for (const auto &kept : limit_states_)
+        state.kept_samples.push_back(kept.first);
       state.stage_start_sample.assign(stage_start_sample_.begin(), stage_start_sample_.end());
       // The response is copied only when a checkpoint is due.
       const bool due = (checkpoints_.stop_requested && checkpoints_.stop_requested()) ||

@@ -47,10 +47,13 @@ bool holds(const Condition &c, const ResponseSample &s, const ConditionContext &
 /// When and where a run checkpoints itself (ProgramCheckpoint.h). At a main-path sample,
 /// once `every_seconds` of wall time have passed since the last checkpoint (0: never on
 /// time) or when `stop_requested()` says so, the runner calls `write` with its state, the
-/// engine's current state and the engine state at the running peak (null if none).
+/// engine's current state, the engine state at the running peak (null if none) and the
+/// states the open elastic-limit bracket keeps (one per RunnerState::kept_samples entry).
 struct CheckpointPolicy {
   double every_seconds = 0.0;
-  std::function<void(const RunnerState &, const EngineState &current, const EngineState *peak)> write;
+  std::function<void(const RunnerState &, const EngineState &current, const EngineState *peak,
+                     const std::vector<const EngineState *> &kept)>
+    write;
   std::function<bool()> stop_requested;
 };
 
@@ -86,8 +89,10 @@ public:
   Response run();
   /// Continues a run from a checkpoint: the engine must already hold the checkpoint's
   /// current state (engine.restore(*engine.read_state(...))); `peak` is the stored peak
-  /// state, if the checkpoint has one. The result equals the uninterrupted run's.
-  Response resume(RunnerState state, std::unique_ptr<EngineState> peak);
+  /// state, if the checkpoint has one, and `kept` the bracket's states (one per
+  /// state.kept_samples entry). The result equals the uninterrupted run's.
+  Response resume(RunnerState state, std::unique_ptr<EngineState> peak,
+                  std::vector<std::unique_ptr<EngineState>> kept = {});
 
 private:
   /// Runs stage `index` from its start, or from `from` (a checkpoint in it).

@@ -161,8 +161,9 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
     CheckpointPolicy policy;
     policy.every_seconds = c.dem.checkpoint_interval;
     policy.stop_requested = [] { return dem::interrupt_requested() != 0; };
-    policy.write = [&](const RunnerState &state, const EngineState &current, const EngineState *peak) {
-      write_program_checkpoint(checkpoint, key, state, *e, current, peak, snapshots ? snapshots->next() : 0);
+    policy.write = [&](const RunnerState &state, const EngineState &current, const EngineState *peak,
+                       const std::vector<const EngineState *> &kept) {
+      write_program_checkpoint(checkpoint, key, state, *e, current, peak, kept, snapshots ? snapshots->next() : 0);
     };
     runner.set_checkpoints(policy);
     if (reuse)
@@ -185,7 +186,7 @@ Response run_engine(const std::string &engine, const CaseDescription &c, const f
       if (dem_section)
         dem_section->resume(resumed->runner.time);
       e->restore(*resumed->current);
-      r = runner.resume(std::move(resumed->runner), std::move(resumed->peak));
+      r = runner.resume(std::move(resumed->runner), std::move(resumed->peak), std::move(resumed->kept));
     } else {
       if (snapshots)
         snapshots->start();

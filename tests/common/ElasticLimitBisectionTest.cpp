@@ -116,6 +116,69 @@ TEST(ElasticLimitBisection, LeavesTheMainPathAndPlannedBranchesUnchangedAndRepea
   EXPECT_EQ(completion_status(b, locating(planned, 1e-3)), "complete");
 }
 
+// A program checkpoint taken while the bracket is open carries the main-path states it keeps
+// (RunnerState::kept_samples): a run stopped at any main-path sample and resumed in a fresh
+// engine bisects as the uninterrupted run, bit for bit. Before, a run resumed inside the
+// bracket had none of them and ran no bisection branch.
+TEST(ElasticLimitBisection, ARunStoppedAndResumedInsideTheOpenBracketBisectsAsTheUninterruptedRun)
+{
+  const LoadingProgram program = locating({"gamma_max >= 0.005", "gamma_max >= 0.08"}, 1e-3);
+  HystereticShearEngine reference_engine;
+  const Response reference = ProgramRunner(program, reference_engine).run();
+  ASSERT_GT(bisection_branches(reference), 0);
+  const auto copy = [](const EngineState &s) -> std::unique_ptr<EngineState> {
+    return std::make_unique<HystereticShearEngine::State>(dynamic_cast<const HystereticShearEngine::State &>(s));
+  };
+  int inside = 0;
+  for (std::size_t stop_after = 1; stop_after + 1 < reference.path(0).size(); ++stop_after) {
+    SCOPED_TRACE("stopped after " + std::to_string(stop_after) + " main-path samples");
+    HystereticShearEngine engine;
+    ProgramRunner runner(program, engine);
+    std::size_t seen = 0;
+    runner.on_progress([&](const RunProgress &p) { seen += p.branch == 0 ? 1 : 0; });
+    RunnerState stopped;
+    std::unique_ptr<EngineState> current, peak;
+    std::vector<std::unique_ptr<EngineState>> kept;
+    CheckpointPolicy policy;
+    policy.stop_requested = [&] { return seen >= stop_after; };
+    policy.write = [&](const RunnerState &state, const EngineState &now, const EngineState *at_peak,
+                       const std::vector<const EngineState *> &bracket) {
+      stopped = state;
+      current = copy(now);
+      peak = at_peak ? copy(*at_peak) : nullptr;
+      for (const EngineState *b : bracket)
+        kept.push_back(copy(*b));
+    };
+    runner.set_checkpoints(policy);
+    try {
+      runner.run();
+      continue; // finished before the stop: nothing to resume
+    } catch (const ProgramStopped &) {
+    }
+    inside += stopped.kept_samples.empty() ? 0 : 1;
+    // A fresh engine as a new process has it: following the stage's control (the DEM engine
+    // keeps it in its state; this one does not), in the checkpoint's state.
+    HystereticShearEngine fresh;
+    StageControl control;
+    control.stage = &program.stages[0];
+    control.t0 = reference.samples.front().time;
+    control.eps0 = reference.samples.front().strain.diagonal();
+    control.direction = 1.0;
+    fresh.begin_control(control);
+    fresh.restore(*current);
+    const Response r = ProgramRunner(program, fresh).resume(std::move(stopped), std::move(peak), std::move(kept));
+    ASSERT_EQ(r.samples.size(), reference.samples.size());
+    for (std::size_t k = 0; k < r.samples.size(); ++k) {
+      EXPECT_EQ(r.samples[k].time, reference.samples[k].time) << "sample " << k;
+      EXPECT_EQ(r.samples[k].stress, reference.samples[k].stress) << "sample " << k;
+    }
+    ASSERT_EQ(r.branches.size(), reference.branches.size());
+    for (std::size_t k = 0; k < r.branches.size(); ++k)
+      EXPECT_EQ(r.branches[k].residual_gamma, reference.branches[k].residual_gamma) << "branch " << k;
+  }
+  EXPECT_GT(inside, 3) << "some stops must fall inside the open bracket";
+}
+
 // No planned branch reaches 1 %: nothing to bisect, no branch invented.
 TEST(ElasticLimitBisection, NoBranchReachingOnePercentMeansNoBracketAndNoExtraBranch)
 {

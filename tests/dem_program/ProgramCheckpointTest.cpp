@@ -80,8 +80,9 @@ TEST(ProgramCheckpoint, StoppedAndResumedRunEqualsTheUninterruptedRunBitForBit)
     runner.on_progress([&](const RunProgress &p) { seen += p.branch == 0 ? 1 : 0; });
     CheckpointPolicy policy;
     policy.stop_requested = [&] { return seen >= stop_after; };
-    policy.write = [&](const RunnerState &s, const EngineState &current, const EngineState *peak) {
-      write_program_checkpoint(file, key, s, engine, current, peak, 7);
+    policy.write = [&](const RunnerState &s, const EngineState &current, const EngineState *peak,
+                       const std::vector<const EngineState *> &kept) {
+      write_program_checkpoint(file, key, s, engine, current, peak, kept, 7);
     };
     runner.set_checkpoints(policy);
     EXPECT_THROW(runner.run(), ProgramStopped);
@@ -95,7 +96,7 @@ TEST(ProgramCheckpoint, StoppedAndResumedRunEqualsTheUninterruptedRunBitForBit)
     EXPECT_TRUE(c->runner.has_peak_state);
     fresh.restore(*c->current);
     ProgramRunner again(program, fresh);
-    EXPECT_TRUE(same_response(again.resume(std::move(c->runner), std::move(c->peak)), reference));
+    EXPECT_TRUE(same_response(again.resume(std::move(c->runner), std::move(c->peak), std::move(c->kept)), reference));
   }
   fs::remove(file);
 }
