@@ -290,14 +290,14 @@ void ProgramRunner::run_stage(int index, const RunnerState *from, std::unique_pt
       for (bool f : fired)
         state.fired.push_back(f ? 1 : 0);
       state.has_peak_state = bool(peak_state);
-      for (const auto &kept : limit_states_)
-        state.kept_samples.push_back(kept.first);
       state.stage_start_sample.assign(stage_start_sample_.begin(), stage_start_sample_.end());
       // The response is copied only when a checkpoint is due.
       const bool due = (checkpoints_.stop_requested && checkpoints_.stop_requested()) ||
                        (checkpoints_.every_seconds > 0.0 && steady_seconds() - last_checkpoint_ >= checkpoints_.every_seconds);
       if (due) {
         state.response = response_;
+        for (const auto &kept : limit_states_) // their states: maybe_checkpoint, in this order
+          state.kept_samples.push_back(kept.first);
         maybe_checkpoint(state, peak_state.get());
       }
     }
